@@ -1,0 +1,27 @@
+//! Complex-function layer of the dynamic wedge-indentation engine.
+//!
+//! Everything here is independent of the wedge problem: the precision layer ([`scalar`],
+//! [`cx`]), the radicals p_k with the cuts of the reference paper ([`branch`]), the Rayleigh
+//! family K, L, R and the Rayleigh root ([`rayleigh`]), Plemelj boundary values and the
+//! operator D ([`plemelj`]), Cauchy integrals and principal values ([`cauchy`]) and the
+//! quadrature rules they rest on ([`quadrature`]).
+//!
+//! Reference: "Dynamic indentation of an elastic half-plane by a rigid wedge: frictional and
+//! tangential-displacement effects", eqs (12)-(21). Every function is generic over
+//! [`scalar::Real`], implemented for `f64` and `rug::Float`.
+#![warn(missing_docs)]
+
+pub mod branch;
+pub mod cauchy;
+pub mod cx;
+pub mod error;
+pub mod plemelj;
+pub mod quadrature;
+pub mod rayleigh;
+pub mod scalar;
+
+pub use branch::{p_boundary, p_k, Side};
+pub use cx::Cx;
+pub use error::{Error, Result};
+pub use rayleigh::{Rayleigh, RayleighValues};
+pub use scalar::{Precision, Real};

@@ -1,0 +1,451 @@
+//! The precision layer: one real-scalar trait, [`Real`], with two backends.
+//!
+//! * `f64`: every operation is a hardware operation, values are `Copy`, nothing allocates.
+//! * [`rug::Float`]: MPFR numbers whose precision (in bits) is chosen at run time. A value
+//!   carries its own precision; new constants are made "like" an existing value with
+//!   [`Real::lit`], so generic code never needs a global precision context.
+//!
+//! Every formula of the workspace is written once, generic over `T: Real`, and the choice of
+//! backend is made at the edge (a case builder or the command line) through [`Precision`].
+//!
+//! Arithmetic is written with owned left operands (`a.clone() * &b`), which is free for `f64`
+//! and, for `rug::Float`, reuses the left operand's allocation.
+
+use std::fmt::{Debug, Display};
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+use rug::float::Constant;
+use rug::ops::Pow;
+use rug::Float;
+
+use crate::error::{Error, Result};
+
+/// Precision requested by a caller: hardware doubles or an MPFR mantissa of `bits` bits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Precision {
+    /// IEEE-754 binary64 (53-bit mantissa), the allocation-free path.
+    F64,
+    /// An MPFR float with the given mantissa length in bits (>= 2).
+    Bits(u32),
+}
+
+impl Precision {
+    /// Precision able to hold `digits` significant decimal digits, plus `guard` guard bits.
+    ///
+    /// Errors if `digits == 0`.
+    pub fn from_digits(digits: u32, guard: u32) -> Result<Self> {
+        if digits == 0 {
+            return Err(Error::InvalidParameter {
+                name: "digits",
+                value: "0".into(),
+                range: ">= 1",
+            });
+        }
+        let bits = (f64::from(digits) * std::f64::consts::LOG2_10).ceil() as u32 + guard;
+        Ok(Precision::Bits(bits))
+    }
+
+    /// Mantissa length in bits (53 for `F64`).
+    pub fn bits(self) -> u32 {
+        match self {
+            Precision::F64 => 53,
+            Precision::Bits(b) => b,
+        }
+    }
+
+    /// Validate a precision in bits: 0 and 1 are refused (MPFR needs at least 2 bits).
+    pub fn checked_bits(bits: u32) -> Result<Self> {
+        if bits < 2 || bits > 1 << 24 {
+            return Err(Error::InvalidParameter {
+                name: "precision_bits",
+                value: bits.to_string(),
+                range: "2 ..= 16777216",
+            });
+        }
+        Ok(Precision::Bits(bits))
+    }
+}
+
+/// A real scalar: the operations the formulas of this workspace use, for `f64` and `rug::Float`.
+///
+/// Contract: every transcendental returns the correctly rounded (`rug`) or libm-accurate
+/// (`f64`) result at the precision of `self`; constants made with [`Real::lit`] get the
+/// precision of `self`.
+pub trait Real:
+    Clone
+    + Debug
+    + Display
+    + PartialOrd
+    + PartialOrd<f64>
+    + PartialEq<f64>
+    + Send
+    + Sync
+    + 'static
+    + Neg<Output = Self>
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+    + Add<f64, Output = Self>
+    + Sub<f64, Output = Self>
+    + Mul<f64, Output = Self>
+    + Div<f64, Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+    + DivAssign
+    + for<'a> AddAssign<&'a Self>
+    + for<'a> SubAssign<&'a Self>
+    + for<'a> MulAssign<&'a Self>
+    + for<'a> DivAssign<&'a Self>
+    + AddAssign<f64>
+    + SubAssign<f64>
+    + MulAssign<f64>
+    + DivAssign<f64>
+{
+    /// The value `x` at `bits` bits of precision (`bits` is ignored by `f64`).
+    fn from_f64_prec(x: f64, bits: u32) -> Self;
+    /// Parse a decimal string at `bits` bits (for reference values with more digits than f64).
+    fn parse_prec(s: &str, bits: u32) -> Result<Self>;
+    /// Mantissa length of this value in bits.
+    fn prec(&self) -> u32;
+    /// Nearest `f64`.
+    fn to_f64(&self) -> f64;
+
+    /// `x` at the precision of `self`.
+    #[inline]
+    fn lit(&self, x: f64) -> Self {
+        Self::from_f64_prec(x, self.prec())
+    }
+    /// Zero at the precision of `self`.
+    #[inline]
+    fn zero(&self) -> Self {
+        self.lit(0.0)
+    }
+    /// One at the precision of `self`.
+    #[inline]
+    fn one(&self) -> Self {
+        self.lit(1.0)
+    }
+    /// pi at the precision of `self`.
+    fn pi(&self) -> Self;
+    /// Unit roundoff 2^(1 - prec) of `self`'s precision.
+    fn epsilon(&self) -> Self {
+        self.lit(2.0).powi(1 - self.prec() as i32)
+    }
+
+    /// Square root (of a non-negative value).
+    fn sqrt(self) -> Self;
+    /// Natural logarithm.
+    fn ln(self) -> Self;
+    /// ln(1 + x), accurate for small x.
+    fn ln_1p(self) -> Self;
+    /// Exponential.
+    fn exp(self) -> Self;
+    /// exp(x) - 1, accurate for small x.
+    fn exp_m1(self) -> Self;
+    /// Sine.
+    fn sin(self) -> Self;
+    /// Cosine.
+    fn cos(self) -> Self;
+    /// Sine and cosine together.
+    fn sin_cos(self) -> (Self, Self);
+    /// Tangent.
+    fn tan(self) -> Self;
+    /// Arctangent in (-pi/2, pi/2).
+    fn atan(self) -> Self;
+    /// Four-quadrant arctangent of `self / x` in (-pi, pi].
+    fn atan2(self, x: &Self) -> Self;
+    /// Hyperbolic sine.
+    fn sinh(self) -> Self;
+    /// Hyperbolic cosine.
+    fn cosh(self) -> Self;
+    /// Hyperbolic tangent.
+    fn tanh(self) -> Self;
+    /// Inverse hyperbolic cosine (argument >= 1).
+    fn acosh(self) -> Self;
+    /// sqrt(self^2 + y^2) without overflow.
+    fn hypot(self, y: &Self) -> Self;
+    /// Absolute value.
+    fn abs(self) -> Self;
+    /// `self^e` for a real exponent (self >= 0).
+    fn powf(self, e: &Self) -> Self;
+    /// `self^n` for an integer exponent.
+    fn powi(self, n: i32) -> Self;
+    /// Whether the sign bit is set (distinguishes -0 from +0).
+    fn is_sign_negative(&self) -> bool;
+    /// Neither infinite nor NaN.
+    fn is_finite(&self) -> bool;
+
+    /// 1/self.
+    #[inline]
+    fn recip(self) -> Self {
+        self.one() / self
+    }
+    /// self^2.
+    #[inline]
+    fn sqr(self) -> Self {
+        self.clone() * &self
+    }
+    /// The larger of two values.
+    #[inline]
+    fn max(self, other: Self) -> Self {
+        if other > self {
+            other
+        } else {
+            self
+        }
+    }
+    /// The smaller of two values.
+    #[inline]
+    fn min(self, other: Self) -> Self {
+        if other < self {
+            other
+        } else {
+            self
+        }
+    }
+    /// |self| with the sign of `s` (sign bit respected, so -0 counts as negative).
+    #[inline]
+    fn copysign(self, s: &Self) -> Self {
+        let a = self.abs();
+        if s.is_sign_negative() {
+            -a
+        } else {
+            a
+        }
+    }
+}
+
+impl Real for f64 {
+    #[inline]
+    fn from_f64_prec(x: f64, _bits: u32) -> Self {
+        x
+    }
+    fn parse_prec(s: &str, _bits: u32) -> Result<Self> {
+        s.trim().parse::<f64>().map_err(|_| Error::Parse(s.to_string()))
+    }
+    #[inline]
+    fn prec(&self) -> u32 {
+        53
+    }
+    #[inline]
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    #[inline]
+    fn pi(&self) -> Self {
+        std::f64::consts::PI
+    }
+    #[inline]
+    fn epsilon(&self) -> Self {
+        f64::EPSILON
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        f64::sqrt(self)
+    }
+    #[inline]
+    fn ln(self) -> Self {
+        f64::ln(self)
+    }
+    #[inline]
+    fn ln_1p(self) -> Self {
+        f64::ln_1p(self)
+    }
+    #[inline]
+    fn exp(self) -> Self {
+        f64::exp(self)
+    }
+    #[inline]
+    fn exp_m1(self) -> Self {
+        f64::exp_m1(self)
+    }
+    #[inline]
+    fn sin(self) -> Self {
+        f64::sin(self)
+    }
+    #[inline]
+    fn cos(self) -> Self {
+        f64::cos(self)
+    }
+    #[inline]
+    fn sin_cos(self) -> (Self, Self) {
+        f64::sin_cos(self)
+    }
+    #[inline]
+    fn tan(self) -> Self {
+        f64::tan(self)
+    }
+    #[inline]
+    fn atan(self) -> Self {
+        f64::atan(self)
+    }
+    #[inline]
+    fn atan2(self, x: &Self) -> Self {
+        f64::atan2(self, *x)
+    }
+    #[inline]
+    fn sinh(self) -> Self {
+        f64::sinh(self)
+    }
+    #[inline]
+    fn cosh(self) -> Self {
+        f64::cosh(self)
+    }
+    #[inline]
+    fn tanh(self) -> Self {
+        f64::tanh(self)
+    }
+    #[inline]
+    fn acosh(self) -> Self {
+        f64::acosh(self)
+    }
+    #[inline]
+    fn hypot(self, y: &Self) -> Self {
+        f64::hypot(self, *y)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        f64::abs(self)
+    }
+    #[inline]
+    fn powf(self, e: &Self) -> Self {
+        f64::powf(self, *e)
+    }
+    #[inline]
+    fn powi(self, n: i32) -> Self {
+        f64::powi(self, n)
+    }
+    #[inline]
+    fn is_sign_negative(&self) -> bool {
+        f64::is_sign_negative(*self)
+    }
+    #[inline]
+    fn is_finite(&self) -> bool {
+        f64::is_finite(*self)
+    }
+}
+
+impl Real for Float {
+    #[inline]
+    fn from_f64_prec(x: f64, bits: u32) -> Self {
+        Float::with_val(bits, x)
+    }
+    fn parse_prec(s: &str, bits: u32) -> Result<Self> {
+        Float::parse(s.trim())
+            .map(|p| Float::with_val(bits, p))
+            .map_err(|_| Error::Parse(s.to_string()))
+    }
+    #[inline]
+    fn prec(&self) -> u32 {
+        Float::prec(self)
+    }
+    #[inline]
+    fn to_f64(&self) -> f64 {
+        Float::to_f64(self)
+    }
+    fn pi(&self) -> Self {
+        Float::with_val(Float::prec(self), Constant::Pi)
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        Float::sqrt(self)
+    }
+    #[inline]
+    fn ln(self) -> Self {
+        Float::ln(self)
+    }
+    #[inline]
+    fn ln_1p(self) -> Self {
+        Float::ln_1p(self)
+    }
+    #[inline]
+    fn exp(self) -> Self {
+        Float::exp(self)
+    }
+    #[inline]
+    fn exp_m1(self) -> Self {
+        Float::exp_m1(self)
+    }
+    #[inline]
+    fn sin(self) -> Self {
+        Float::sin(self)
+    }
+    #[inline]
+    fn cos(self) -> Self {
+        Float::cos(self)
+    }
+    fn sin_cos(self) -> (Self, Self) {
+        let c = Float::new(Float::prec(&self));
+        Float::sin_cos(self, c)
+    }
+    #[inline]
+    fn tan(self) -> Self {
+        Float::tan(self)
+    }
+    #[inline]
+    fn atan(self) -> Self {
+        Float::atan(self)
+    }
+    #[inline]
+    fn atan2(self, x: &Self) -> Self {
+        Float::atan2(self, x)
+    }
+    #[inline]
+    fn sinh(self) -> Self {
+        Float::sinh(self)
+    }
+    #[inline]
+    fn cosh(self) -> Self {
+        Float::cosh(self)
+    }
+    #[inline]
+    fn tanh(self) -> Self {
+        Float::tanh(self)
+    }
+    #[inline]
+    fn acosh(self) -> Self {
+        Float::acosh(self)
+    }
+    #[inline]
+    fn hypot(self, y: &Self) -> Self {
+        Float::hypot(self, y)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        Float::abs(self)
+    }
+    #[inline]
+    fn powf(self, e: &Self) -> Self {
+        Pow::pow(self, e)
+    }
+    #[inline]
+    fn powi(self, n: i32) -> Self {
+        Pow::pow(self, n)
+    }
+    #[inline]
+    fn is_sign_negative(&self) -> bool {
+        Float::is_sign_negative(self)
+    }
+    #[inline]
+    fn is_finite(&self) -> bool {
+        Float::is_finite(self)
+    }
+}
+
+/// Relative difference |a - b| / max(|b|, tiny) as an `f64` (a test and error-estimate helper
+/// usable for both backends).
+pub fn rel_diff<T: Real>(a: &T, b: &T) -> f64 {
+    let d = (a.clone() - b).abs();
+    let s = b.clone().abs();
+    if s == 0.0 {
+        d.to_f64()
+    } else {
+        (d / s).to_f64()
+    }
+}
