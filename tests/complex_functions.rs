@@ -94,7 +94,8 @@ fn principal_values_in_closed_form_f64_and_256_bits() {
     // PV int_a^b dv/(v - c) = ln((b - c)/(c - a))
     let (a, b) = (0.1_f64, 2.0_f64);
     for c in [0.11, 0.7, 1.05, 1.99] {
-        let e: Estimate<f64> = principal_value(&a, &b, &c, TsOptions::new(1e-15), |_: &Point<f64>| 1.0).unwrap();
+        let e: Estimate<f64> =
+            principal_value(&a, &b, &c, TsOptions::new(1e-15), |_: &Point<f64>| 1.0).unwrap();
         assert!((e.value - ((b - c) / (c - a)).ln()).abs() < 1e-14);
     }
     let (a, b, c) = (
@@ -103,7 +104,11 @@ fn principal_values_in_closed_form_f64_and_256_bits() {
         Float::with_val(256, 1.05),
     );
     let one = a.one();
-    let e: Estimate<Float> = principal_value(&a, &b, &c, TsOptions::new(1e-72), |_: &Point<Float>| one.clone()).unwrap();
+    let e: Estimate<Float> =
+        principal_value(&a, &b, &c, TsOptions::new(1e-72), |_: &Point<Float>| {
+            one.clone()
+        })
+        .unwrap();
     let exact = ((b.clone() - &c) / (c.clone() - &a)).ln();
     assert!(rel_diff(&e.value, &exact) < 1e-60);
     // weighted, singular at both ends: PV int_0^1 v^(-1/2)/(v - c) dv with sqrt substitution
@@ -111,7 +116,10 @@ fn principal_values_in_closed_form_f64_and_256_bits() {
     let ray = Rayleigh::new(C2 / C1).unwrap();
     let c = *ray.m_r();
     let e: Estimate<f64> =
-        principal_value(&0.0, &1.0, &c, TsOptions::new(1e-15), |p: &Point<f64>| p.from_a.powf(-0.5)).unwrap();
+        principal_value(&0.0, &1.0, &c, TsOptions::new(1e-15), |p: &Point<f64>| {
+            p.from_a.powf(-0.5)
+        })
+        .unwrap();
     let s = c.sqrt();
     let exact = ((1.0 - s) / (1.0 + s)).ln() / s;
     assert!((e.value - exact).abs() < 1e-14 * exact.abs());

@@ -103,7 +103,11 @@ pub fn p_boundary<T: Real>(xi: &T, mk: &T, side: Side) -> Cx<T> {
 /// takes the sign of `Re zeta_k` and, on the cut, the side of `Im zeta_k`.
 pub fn p_same_quadrant<T: Real>(v: &T, mk: &T, zeta_k: &Cx<T>) -> Cx<T> {
     let av = v.clone().abs();
-    let x = if zeta_k.re.is_sign_negative() { -av } else { av };
+    let x = if zeta_k.re.is_sign_negative() {
+        -av
+    } else {
+        av
+    };
     p_boundary(&x, mk, Side::of(zeta_k))
 }
 
@@ -115,7 +119,13 @@ mod tests {
     fn closed_form_is_a_branch_of_the_radical() {
         // p^2 (1 - z^2/m^2) = 1 everywhere off the cut.
         let m = 0.534_f64;
-        for &(x, y) in &[(0.2, 0.3), (-0.7, -0.1), (1.5, 2.0), (-3.0, 0.01), (0.1, -5.0)] {
+        for &(x, y) in &[
+            (0.2, 0.3),
+            (-0.7, -0.1),
+            (1.5, 2.0),
+            (-3.0, 0.01),
+            (0.1, -5.0),
+        ] {
             let z = Cx::new(x, y);
             let p = p_k(&z, &m);
             let one_minus = Cx::new(1.0, 0.0) - z.clone() * &z / (m * m);

@@ -59,7 +59,13 @@ fn point_at<T: Real>(a: &T, b: &T, v: &T) -> Point<T> {
 ///
 /// The subtracted integrand (phi(v) - phi(c))/(v - c) is bounded at c; should a node fall
 /// within sqrt(eps)(b - a) of c, its value there is replaced by a central difference.
-pub fn principal_value<T, V, F>(a: &T, b: &T, c: &T, opts: TsOptions, mut phi: F) -> Result<Estimate<V>>
+pub fn principal_value<T, V, F>(
+    a: &T,
+    b: &T,
+    c: &T,
+    opts: TsOptions,
+    mut phi: F,
+) -> Result<Estimate<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -83,10 +89,18 @@ where
         }
     };
     let left = tanh_sinh(a, &s, opts, |p: &Point<T>| {
-        g(&Point { v: p.v.clone(), from_a: p.from_a.clone(), to_b: b.clone() - &p.v })
+        g(&Point {
+            v: p.v.clone(),
+            from_a: p.from_a.clone(),
+            to_b: b.clone() - &p.v,
+        })
     })?;
     let right = tanh_sinh(&s, b, opts, |p: &Point<T>| {
-        g(&Point { v: p.v.clone(), from_a: p.v.clone() - a, to_b: p.to_b.clone() })
+        g(&Point {
+            v: p.v.clone(),
+            from_a: p.v.clone() - a,
+            to_b: p.to_b.clone(),
+        })
     })?;
     let mut est = combine(left, right);
     let log = ((b.clone() - c) / (c.clone() - a)).ln();
@@ -96,7 +110,13 @@ where
 
 /// The Cauchy integral Phi(zeta) = (1/(2 pi i)) Int_a^b phi(v)/(v - zeta) dv for zeta off
 /// the segment (it may be arbitrarily close to it).
-pub fn cauchy_integral<T, F>(a: &T, b: &T, zeta: &Cx<T>, opts: TsOptions, mut phi: F) -> Result<Estimate<Cx<T>>>
+pub fn cauchy_integral<T, F>(
+    a: &T,
+    b: &T,
+    zeta: &Cx<T>,
+    opts: TsOptions,
+    mut phi: F,
+) -> Result<Estimate<Cx<T>>>
 where
     T: CachedRules,
     F: FnMut(&Point<T>) -> Cx<T>,
@@ -117,10 +137,18 @@ where
     // |Im zeta| around Re zeta, where the nodes of both halves then cluster.
     let mut est = if inside {
         let left = tanh_sinh(a, &x0, opts, |p: &Point<T>| {
-            g(&Point { v: p.v.clone(), from_a: p.from_a.clone(), to_b: b.clone() - &p.v })
+            g(&Point {
+                v: p.v.clone(),
+                from_a: p.from_a.clone(),
+                to_b: b.clone() - &p.v,
+            })
         })?;
         let right = tanh_sinh(&x0, b, opts, |p: &Point<T>| {
-            g(&Point { v: p.v.clone(), from_a: p.v.clone() - a, to_b: p.to_b.clone() })
+            g(&Point {
+                v: p.v.clone(),
+                from_a: p.v.clone() - a,
+                to_b: p.to_b.clone(),
+            })
         })?;
         combine(left, right)
     } else {
@@ -143,7 +171,14 @@ where
 
 /// Sokhotski-Plemelj boundary value Phi^{+-}(xi) = +-phi(xi)/2 + (1/(2 pi i)) PV Int phi/(v - xi)
 /// of the Cauchy integral, for a < xi < b.
-pub fn cauchy_boundary<T, F>(a: &T, b: &T, xi: &T, side: Side, opts: TsOptions, mut phi: F) -> Result<Estimate<Cx<T>>>
+pub fn cauchy_boundary<T, F>(
+    a: &T,
+    b: &T,
+    xi: &T,
+    side: Side,
+    opts: TsOptions,
+    mut phi: F,
+) -> Result<Estimate<Cx<T>>>
 where
     T: CachedRules,
     F: FnMut(&Point<T>) -> Cx<T>,
@@ -168,7 +203,8 @@ mod tests {
     fn plain_principal_value_is_a_logarithm_f64() {
         let (a, b) = (0.2_f64, 1.3_f64);
         for c in [0.25, 0.75, 1.29] {
-            let e: Estimate<f64> = principal_value(&a, &b, &c, TsOptions::new(1e-15), |_p: &Point<f64>| 1.0).unwrap();
+            let e: Estimate<f64> =
+                principal_value(&a, &b, &c, TsOptions::new(1e-15), |_p: &Point<f64>| 1.0).unwrap();
             let exact = ((b - c) / (c - a)).ln();
             assert!((e.value - exact).abs() < 1e-14, "{c}: {} {exact}", e.value);
         }
@@ -179,17 +215,27 @@ mod tests {
         // PV int_0^1 v^(-1/2)/(v - c) dv = ln((1 - sqrt c)/(1 + sqrt c))/sqrt c
         for c in [0.09_f64, 0.5, 0.81] {
             let e: Estimate<f64> =
-                principal_value(&0.0, &1.0, &c, TsOptions::new(1e-15), |p: &Point<f64>| p.from_a.powf(-0.5)).unwrap();
+                principal_value(&0.0, &1.0, &c, TsOptions::new(1e-15), |p: &Point<f64>| {
+                    p.from_a.powf(-0.5)
+                })
+                .unwrap();
             let s = c.sqrt();
             let exact = ((1.0 - s) / (1.0 + s)).ln() / s;
-            assert!((e.value - exact).abs() < 1e-14 * exact.abs(), "{c}: {} {exact}", e.value);
+            assert!(
+                (e.value - exact).abs() < 1e-14 * exact.abs(),
+                "{c}: {} {exact}",
+                e.value
+            );
         }
         let prec = 256;
         let a = Float::with_val(prec, 0);
         let b = Float::with_val(prec, 1);
         let c = Float::with_val(prec, 0.3);
         let e: Estimate<Float> =
-            principal_value(&a, &b, &c, TsOptions::new(1e-70), |p: &Point<Float>| p.from_a.clone().sqrt().recip()).unwrap();
+            principal_value(&a, &b, &c, TsOptions::new(1e-70), |p: &Point<Float>| {
+                p.from_a.clone().sqrt().recip()
+            })
+            .unwrap();
         let s = c.clone().sqrt();
         let exact = ((b.clone() - &s) / (b.clone() + &s)).ln() / s;
         assert!(rel_diff(&e.value, &exact) < 1e-60);
@@ -202,14 +248,25 @@ mod tests {
         let phi = |p: &Point<f64>| Cx::real(p.v.exp() * p.to_b.sqrt());
         let (a, b) = (0.0_f64, 1.0_f64);
         for xi in [0.2, 0.5, 0.9] {
-            let up = cauchy_boundary(&a, &b, &xi, Side::Upper, TsOptions::new(1e-15), phi).unwrap().value;
-            let dn = cauchy_boundary(&a, &b, &xi, Side::Lower, TsOptions::new(1e-15), phi).unwrap().value;
+            let up = cauchy_boundary(&a, &b, &xi, Side::Upper, TsOptions::new(1e-15), phi)
+                .unwrap()
+                .value;
+            let dn = cauchy_boundary(&a, &b, &xi, Side::Lower, TsOptions::new(1e-15), phi)
+                .unwrap()
+                .value;
             let eps = 1e-9;
-            let off_up = cauchy_integral(&a, &b, &Cx::new(xi, eps), TsOptions::new(1e-15), phi).unwrap().value;
-            let off_dn = cauchy_integral(&a, &b, &Cx::new(xi, -eps), TsOptions::new(1e-15), phi).unwrap().value;
+            let off_up = cauchy_integral(&a, &b, &Cx::new(xi, eps), TsOptions::new(1e-15), phi)
+                .unwrap()
+                .value;
+            let off_dn = cauchy_integral(&a, &b, &Cx::new(xi, -eps), TsOptions::new(1e-15), phi)
+                .unwrap()
+                .value;
             let jump = off_up.clone() - &off_dn;
             let phi_xi = xi.exp() * (1.0 - xi).sqrt();
-            assert!((jump.re - phi_xi).abs() < 1e-8 && jump.im.abs() < 1e-8, "{jump}");
+            assert!(
+                (jump.re - phi_xi).abs() < 1e-8 && jump.im.abs() < 1e-8,
+                "{jump}"
+            );
             assert!((up.clone() - &off_up).abs() < 1e-8, "{up} {off_up}");
             assert!((dn.clone() - &off_dn).abs() < 1e-8, "{dn} {off_dn}");
             assert!(((up - &dn).re - phi_xi).abs() < 1e-15);
@@ -220,15 +277,19 @@ mod tests {
     fn f64_and_256_bit_principal_values_agree() {
         let c64 = 0.37_f64;
         let e64: Estimate<f64> =
-            principal_value(&0.0, &1.0, &c64, TsOptions::new(1e-15), |p: &Point<f64>| p.v.cos() * p.from_a.powf(0.25)).unwrap();
+            principal_value(&0.0, &1.0, &c64, TsOptions::new(1e-15), |p: &Point<f64>| {
+                p.v.cos() * p.from_a.powf(0.25)
+            })
+            .unwrap();
         let a = Float::with_val(256, 0);
         let b = Float::with_val(256, 1);
         let c = Float::with_val(256, 0.37);
         let quarter = Float::with_val(256, 0.25);
-        let e: Estimate<Float> = principal_value(&a, &b, &c, TsOptions::new(1e-70), |p: &Point<Float>| {
-            p.v.clone().cos() * p.from_a.clone().powf(&quarter)
-        })
-        .unwrap();
+        let e: Estimate<Float> =
+            principal_value(&a, &b, &c, TsOptions::new(1e-70), |p: &Point<Float>| {
+                p.v.clone().cos() * p.from_a.clone().powf(&quarter)
+            })
+            .unwrap();
         assert!((e64.value - e.value.to_f64()).abs() < 2e-15 * e64.value.abs());
     }
 }

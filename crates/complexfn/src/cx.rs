@@ -138,6 +138,15 @@ impl<T: Real> Cx<T> {
         let (s, c) = a.sin_cos();
         Cx::new(r.clone() * c, r * s)
     }
+    /// Principal arctangent, atan z = (i/2) [ln(1 - i z) - ln(1 + i z)], cuts on the imaginary
+    /// axis beyond +-i.
+    pub fn atan(self) -> Self {
+        let one = self.re.one();
+        let iz = self.clone().mul_i();
+        let a = (-iz.clone()).add_re(&one).ln();
+        let b = iz.add_re(&one).ln();
+        (a - b).mul_i() / 2.0
+    }
     /// Both parts finite.
     #[inline]
     pub fn is_finite(&self) -> bool {
@@ -294,7 +303,13 @@ mod tests {
 
     #[test]
     fn elementary_functions_match_num_complex() {
-        let pts = [(0.3, 0.7), (-2.0, 0.5), (-2.0, -0.5), (1e-3, -4.0), (-1.0, 1e-12)];
+        let pts = [
+            (0.3, 0.7),
+            (-2.0, 0.5),
+            (-2.0, -0.5),
+            (1e-3, -4.0),
+            (-1.0, 1e-12),
+        ];
         for &(x, y) in &pts {
             let z = Cx::new(x, y);
             let c = Complex64::new(x, y);
@@ -302,8 +317,12 @@ mod tests {
             assert!(close(z.clone().ln(), c.ln()), "ln {z}");
             assert!(close(z.clone().exp(), c.exp()), "exp {z}");
             assert!(close(z.clone().powf(&0.37), c.powf(0.37)), "pow {z}");
+            assert!(close(z.clone().atan(), c.atan()), "atan {z}");
             let w = Cx::new(0.4, -1.3);
-            assert!(close(z.clone() / &w, c / Complex64::new(0.4, -1.3)), "div {z}");
+            assert!(
+                close(z.clone() / &w, c / Complex64::new(0.4, -1.3)),
+                "div {z}"
+            );
         }
     }
 

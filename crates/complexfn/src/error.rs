@@ -36,7 +36,13 @@ pub type Result<T> = std::result::Result<T, Error>;
 
 /// Check that `x` is finite and inside the open interval (lo, hi); `name` and `range` go into
 /// the error message.
-pub fn check_open(name: &'static str, x: f64, lo: f64, hi: f64, range: &'static str) -> Result<f64> {
+pub fn check_open(
+    name: &'static str,
+    x: f64,
+    lo: f64,
+    hi: f64,
+    range: &'static str,
+) -> Result<f64> {
     if x.is_finite() && x > lo && x < hi {
         Ok(x)
     } else {

@@ -104,6 +104,37 @@ impl<T: Real> QuadValue<T> for Cx<T> {
     }
 }
 
+impl<T: Real, const N: usize> QuadValue<T> for [T; N] {
+    fn zero_like(like: &T) -> Self {
+        std::array::from_fn(|_| like.zero())
+    }
+    fn add_scaled(&mut self, v: &Self, w: &T) {
+        for (a, b) in self.iter_mut().zip(v.iter()) {
+            *a += b.clone() * w;
+        }
+    }
+    fn magnitude(&self) -> T {
+        let mut m = self[0].zero();
+        for a in self.iter() {
+            m = m.max(a.clone().abs());
+        }
+        m
+    }
+    fn scaled(&self, s: &T) -> Self {
+        std::array::from_fn(|i| self[i].clone() * s)
+    }
+    fn distance(&self, other: &Self) -> T {
+        let mut m = self[0].zero();
+        for (a, b) in self.iter().zip(other.iter()) {
+            m = m.max((a.clone() - b).abs());
+        }
+        m
+    }
+    fn minus(&self, other: &Self) -> Self {
+        std::array::from_fn(|i| self[i].clone() - &other[i])
+    }
+}
+
 /// A quadrature result with its (absolute) error estimate.
 #[derive(Clone, Debug)]
 pub struct Estimate<V> {
@@ -125,45 +156,54 @@ pub struct TsNode<T> {
 }
 
 /// Tanh-sinh nodes for one precision: level 0 has step 1 (t = 0, 1, 2, ...), level k >= 1
-/// adds the odd multiples of 2^-k. Only t >= 0 is stored; the rule is symmetric.
+/// adds the odd multiples of 2^-k. Only t >= 0 is stored; the rule is symmetric. Levels are
+/// computed on first use (each costs a few transcendentals per node at the rule's precision).
 #[derive(Debug)]
 pub struct TanhSinhRule<T> {
     prec: u32,
-    levels: Vec<Vec<TsNode<T>>>,
+    t_max: f64,
+    levels: Vec<OnceLock<Vec<TsNode<T>>>>,
 }
 
 impl<T: Real> TanhSinhRule<T> {
-    /// Build the rule at `prec` bits with `max_level` levels; nodes go out to
+    /// The rule at `prec` bits with `max_level` levels; nodes go out to
     /// 1 - x ~ 2^(-3 prec) so that [`Tails::Singular`] integrands are resolved.
     pub fn new(prec: u32, max_level: usize) -> Self {
-        let like = T::from_f64_prec(0.0, prec);
-        let half_pi = like.pi() / 2.0;
         // tail: pi sinh t_max = 3 prec ln 2 + 2
         let tail = 3.0 * f64::from(prec) * std::f64::consts::LN_2 + 2.0;
         let t_max = (tail / std::f64::consts::PI).asinh();
-        let mut levels = Vec::with_capacity(max_level + 1);
-        for k in 0..=max_level {
-            let h = 0.5_f64.powi(k as i32);
-            let mut nodes = Vec::new();
-            let mut j: u64 = if k == 0 { 0 } else { 1 };
-            loop {
-                let t = j as f64 * h;
-                if t > t_max {
-                    break;
-                }
-                let tt = like.lit(2.0).powi(-(k as i32)) * like.lit(j as f64);
-                let (sh, ch) = (tt.clone().sinh(), tt.cosh());
-                let u = half_pi.clone() * sh;
-                let e2u = (u.clone() * 2.0).exp();
-                let one_minus_x = like.lit(2.0) / (e2u + 1.0);
-                let cu = u.cosh();
-                let weight = half_pi.clone() * ch / cu.sqr();
-                nodes.push(TsNode { one_minus_x, weight });
-                j += if k == 0 { 1 } else { 2 };
-            }
-            levels.push(nodes);
+        TanhSinhRule {
+            prec,
+            t_max,
+            levels: (0..=max_level).map(|_| OnceLock::new()).collect(),
         }
-        TanhSinhRule { prec, levels }
+    }
+
+    fn build_level(&self, k: usize) -> Vec<TsNode<T>> {
+        let like = T::from_f64_prec(0.0, self.prec);
+        let half_pi = like.pi() / 2.0;
+        let h = 0.5_f64.powi(k as i32);
+        let mut nodes = Vec::new();
+        let mut j: u64 = if k == 0 { 0 } else { 1 };
+        loop {
+            let t = j as f64 * h;
+            if t > self.t_max {
+                break;
+            }
+            let tt = like.lit(2.0).powi(-(k as i32)) * like.lit(j as f64);
+            let (sh, ch) = (tt.clone().sinh(), tt.cosh());
+            let u = half_pi.clone() * sh;
+            let e2u = (u.clone() * 2.0).exp();
+            let one_minus_x = like.lit(2.0) / (e2u + 1.0);
+            let cu = u.cosh();
+            let weight = half_pi.clone() * ch / cu.sqr();
+            nodes.push(TsNode {
+                one_minus_x,
+                weight,
+            });
+            j += if k == 0 { 1 } else { 2 };
+        }
+        nodes
     }
 
     /// Precision of the nodes in bits.
@@ -174,9 +214,9 @@ impl<T: Real> TanhSinhRule<T> {
     pub fn max_level(&self) -> usize {
         self.levels.len() - 1
     }
-    /// The nodes added at `level`.
+    /// The nodes added at `level` (computed on first use).
     pub fn level(&self, level: usize) -> &[TsNode<T>] {
-        &self.levels[level]
+        self.levels[level].get_or_init(|| self.build_level(level))
     }
 }
 
@@ -190,14 +230,71 @@ pub fn default_max_level(prec: u32) -> usize {
 #[derive(Debug)]
 pub struct RuleStore<T> {
     rules: Mutex<HashMap<u32, Arc<TanhSinhRule<T>>>>,
+    legendre: Mutex<HashMap<(u32, usize), Arc<Vec<(T, T)>>>>,
 }
 
 impl<T> Default for RuleStore<T> {
     fn default() -> Self {
         RuleStore {
             rules: Mutex::new(HashMap::new()),
+            legendre: Mutex::new(HashMap::new()),
         }
     }
+}
+
+/// The n-point Gauss-Legendre rule on [-1, 1] at `prec` bits, as (node, weight) pairs,
+/// cached per (prec, n). In f64 the nodes come from `gauss-quad`; at higher precision they
+/// are polished by Newton's method on P_n (three-term recurrence) from the f64 nodes, each
+/// step doubling the number of correct bits.
+pub fn gauss_legendre_rule<T: CachedRules>(n: usize, prec: u32) -> Result<Arc<Vec<(T, T)>>> {
+    let base = gauss_legendre(n)?;
+    let store = T::store();
+    if let Some(r) = store
+        .legendre
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .get(&(prec, n))
+    {
+        return Ok(r.clone());
+    }
+    let like = T::from_f64_prec(0.0, prec);
+    let steps = if prec <= 53 {
+        0
+    } else {
+        (f64::from(prec) / 40.0).log2().ceil() as usize + 2
+    };
+    let mut nodes = Vec::with_capacity(n);
+    for &(x0, w0) in &base.nodes {
+        if steps == 0 {
+            nodes.push((like.lit(x0), like.lit(w0)));
+            continue;
+        }
+        let mut x = like.lit(x0);
+        let mut dp = like.one();
+        for _ in 0..steps {
+            // P_n(x) and P_{n-1}(x)
+            let mut p0 = like.one();
+            let mut p1 = x.clone();
+            for k in 1..n {
+                let kf = k as f64;
+                let p2 = (x.clone() * &p1 * (2.0 * kf + 1.0) - p0 * kf) / (kf + 1.0);
+                p0 = p1;
+                p1 = p2;
+            }
+            let x2m1 = x.clone().sqr() - 1.0;
+            dp = (x.clone() * &p1 - &p0) * (n as f64) / &x2m1;
+            x -= p1 / &dp;
+        }
+        let w = like.lit(2.0) / ((like.one() - x.clone().sqr()) * dp.sqr());
+        nodes.push((x, w));
+    }
+    let r = Arc::new(nodes);
+    store
+        .legendre
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .insert((prec, n), r.clone());
+    Ok(r)
 }
 
 /// Backends that keep a process-wide cache of tanh-sinh rules.
@@ -278,41 +375,42 @@ where
     let mut evals = 0usize;
 
     // value at a node of [-1,1] on the positive side (sign = +1) or the negative side.
-    let mut eval_pair = |node: &TsNode<T>, acc: &mut V, mag: &mut T, skip_pos: bool, skip_neg: bool| -> (T, T) {
-        let c = node.one_minus_x.clone();
-        let big = half.clone() * (T::from_f64_prec(2.0, c.prec()) - &c);
-        let small = half.clone() * &c;
-        let mut tp = c.zero();
-        let mut tn = c.zero();
-        if !skip_pos {
-            // x > 0: near b
-            let p = Point {
-                v: b.clone() - &small,
-                from_a: big.clone(),
-                to_b: small.clone(),
-            };
-            let y = f(&p);
-            evals += 1;
-            let m = y.magnitude() * &node.weight;
-            acc.add_scaled(&y, &node.weight);
-            *mag += &m;
-            tp = m;
-        }
-        if !skip_neg && node.one_minus_x < 1.0 {
-            let p = Point {
-                v: a.clone() + &small,
-                from_a: small.clone(),
-                to_b: big,
-            };
-            let y = f(&p);
-            evals += 1;
-            let m = y.magnitude() * &node.weight;
-            acc.add_scaled(&y, &node.weight);
-            *mag += &m;
-            tn = m;
-        }
-        (tp, tn)
-    };
+    let mut eval_pair =
+        |node: &TsNode<T>, acc: &mut V, mag: &mut T, skip_pos: bool, skip_neg: bool| -> (T, T) {
+            let c = node.one_minus_x.clone();
+            let big = half.clone() * (T::from_f64_prec(2.0, c.prec()) - &c);
+            let small = half.clone() * &c;
+            let mut tp = c.zero();
+            let mut tn = c.zero();
+            if !skip_pos {
+                // x > 0: near b
+                let p = Point {
+                    v: b.clone() - &small,
+                    from_a: big.clone(),
+                    to_b: small.clone(),
+                };
+                let y = f(&p);
+                evals += 1;
+                let m = y.magnitude() * &node.weight;
+                acc.add_scaled(&y, &node.weight);
+                *mag += &m;
+                tp = m;
+            }
+            if !skip_neg && node.one_minus_x < 1.0 {
+                let p = Point {
+                    v: a.clone() + &small,
+                    from_a: small.clone(),
+                    to_b: big,
+                };
+                let y = f(&p);
+                evals += 1;
+                let m = y.magnitude() * &node.weight;
+                acc.add_scaled(&y, &node.weight);
+                *mag += &m;
+                tn = m;
+            }
+            (tp, tn)
+        };
 
     // Level 0 decides how far into each tail the rule goes.
     let mut acc = V::zero_like(a);
@@ -323,7 +421,8 @@ where
     let mut small_neg = 0;
     let lvl0 = rule.level(0);
     for (j, node) in lvl0.iter().enumerate() {
-        let skip = node.one_minus_x.clone() * &half < min_offset.clone() * &half.clone().abs() * 2.0;
+        let skip =
+            node.one_minus_x.clone() * &half < min_offset.clone() * &half.clone().abs() * 2.0;
         if skip {
             break;
         }
@@ -445,8 +544,10 @@ pub fn gauss_jacobi(n: usize, alpha: f64, beta: f64) -> Result<Arc<F64Rule>> {
         value: format!("{v}"),
         range: "(-1, inf), finite",
     };
-    let a = gauss_quad::FiniteAboveNegOneF64::try_from(alpha).map_err(|_| bad("jacobi alpha", alpha))?;
-    let b = gauss_quad::FiniteAboveNegOneF64::try_from(beta).map_err(|_| bad("jacobi beta", beta))?;
+    let a = gauss_quad::FiniteAboveNegOneF64::try_from(alpha)
+        .map_err(|_| bad("jacobi alpha", alpha))?;
+    let b =
+        gauss_quad::FiniteAboveNegOneF64::try_from(beta).map_err(|_| bad("jacobi beta", beta))?;
     let mut c = f64_rule_cache().lock().unwrap_or_else(|e| e.into_inner());
     Ok(c.entry((n, alpha.to_bits(), beta.to_bits()))
         .or_insert_with(|| {
@@ -461,7 +562,12 @@ pub fn gauss_jacobi(n: usize, alpha: f64, beta: f64) -> Result<Arc<F64Rule>> {
 impl F64Rule {
     /// Sum of w f over the rule mapped to [a, b] (the Jacobi weight, if any, is implied and
     /// not multiplied in; the caller scales by ((b - a)/2)^(1 + alpha + beta)).
-    pub fn integrate<V: QuadValue<f64>, F: FnMut(&Point<f64>) -> V>(&self, a: f64, b: f64, mut f: F) -> V {
+    pub fn integrate<V: QuadValue<f64>, F: FnMut(&Point<f64>) -> V>(
+        &self,
+        a: f64,
+        b: f64,
+        mut f: F,
+    ) -> V {
         let half = 0.5 * (b - a);
         let mut acc = V::zero_like(&0.0);
         for &(x, w) in &self.nodes {
@@ -517,7 +623,12 @@ mod tests {
             p.from_a.powf(-0.5) * p.to_b.powf(-1.0 / 3.0)
         })
         .unwrap();
-        assert!((e.value - exact).abs() < 3e-15 * exact, "{} {}", e.value, e.error);
+        assert!(
+            (e.value - exact).abs() < 3e-15 * exact,
+            "{} {}",
+            e.value,
+            e.error
+        );
     }
 
     #[test]
@@ -533,6 +644,18 @@ mod tests {
         let exact = a.pi() * b.clone().lit(2.0).ln() / 8.0;
         assert!(crate::scalar::rel_diff(&e.value, &exact) < 1e-72);
         assert!(e.error < 1e-60);
+    }
+
+    #[test]
+    fn gauss_legendre_at_256_bits_integrates_exp_to_full_precision() {
+        let r = gauss_legendre_rule::<Float>(40, 256).unwrap();
+        let mut acc = Float::with_val(256, 0);
+        for (x, w) in r.iter() {
+            acc += x.clone().exp() * w;
+        }
+        let one = Float::with_val(256, 1);
+        let exact = one.clone().exp() - (-one).exp();
+        assert!(crate::scalar::rel_diff(&acc, &exact) < 1e-74);
     }
 
     #[test]

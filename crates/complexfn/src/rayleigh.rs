@@ -38,6 +38,8 @@ pub struct Rayleigh<T> {
     m2: T,
     inv_m2: T,
     m_r: T,
+    /// x_R = (m_R/m)^2, the root of the Rayleigh cubic.
+    x_r: T,
 }
 
 /// p1, p2, K, L, R (and the cancellation-free L/s, R/s) at one point.
@@ -74,8 +76,14 @@ impl<T: Real> Rayleigh<T> {
         let m2 = m.clone().sqr();
         let inv_m2 = m2.clone().recip();
         let x = rayleigh_cubic_root(&m2)?;
-        let m_r = m.clone() * x.sqrt();
-        Ok(Rayleigh { m, m2, inv_m2, m_r })
+        let m_r = m.clone() * x.clone().sqrt();
+        Ok(Rayleigh {
+            m,
+            m2,
+            inv_m2,
+            m_r,
+            x_r: x,
+        })
     }
 
     /// m = c2/c1.
@@ -109,6 +117,38 @@ impl<T: Real> Rayleigh<T> {
         self.from_radicals(Cx::real(s), p1, p2)
     }
 
+    /// The analytic continuation, in s = zeta^2, of the lower boundary values on (0, m):
+    /// p_k = (1 - s/m_k^2)^(-1/2) with the principal power (real positive for s < m_k^2), so
+    /// that functions of xi^2 built from |p1|, |p2|, L and R on (0, m) extend to complex s.
+    pub fn continued(&self, s: &Cx<T>) -> RayleighValues<T> {
+        let one = s.re.one();
+        let minus_half = s.re.lit(-0.5);
+        let p1 = (-s.clone()).add_re(&one).powf(&minus_half);
+        let p2 = (-s.clone().scale(&self.inv_m2))
+            .add_re(&one)
+            .powf(&minus_half);
+        self.from_radicals(s.clone(), p1, p2)
+    }
+
+    /// R(xi)/(xi - m_R) for real 0 <= xi < m, free of cancellation at the Rayleigh root.
+    ///
+    /// With x = xi^2/m^2 and w = sqrt((1 - xi^2)(1 - x)), 16 w^2 - K^4 = -x c(x) where
+    /// c(x) = (x - x_R)(x^2 + (x_R - 8) x + 24 - 16 m^2 + x_R (x_R - 8)) is the Rayleigh cubic,
+    /// and R = (4w - K^2)/w on (0, m), so
+    /// R/(xi - m_R) = -x (xi + m_R) q(x) / (m^2 w (4w + K^2)), q the deflated quadratic.
+    pub fn r_over_xi_minus_root(&self, xi: &T) -> T {
+        let s = xi.clone().sqr();
+        let x = s.clone() * &self.inv_m2;
+        let one = s.one();
+        let w = ((one.clone() - &s) * (one - &x)).sqrt();
+        let k = s.lit(2.0) - &x;
+        let a = self.x_r.clone() - 8.0;
+        let c1 = s.lit(24.0) - self.m2.clone() * 16.0;
+        let quad = (x.clone() + &a) * &x + c1 + self.x_r.clone() * &a;
+        let den = self.m2.clone() * &w * (w.clone() * 4.0 + k.sqr());
+        -(x * (xi.clone() + &self.m_r) * quad) / den
+    }
+
     fn from_radicals(&self, s: Cx<T>, p1: Cx<T>, p2: Cx<T>) -> RayleighValues<T> {
         let q = p1.clone() * &p2;
         let k = Cx::real(s.re.lit(2.0)) - s.clone().scale(&self.inv_m2);
@@ -126,7 +166,12 @@ impl<T: Real> Rayleigh<T> {
             let rho_l = Cx::real(self.inv_m2.clone()) - a * &inv_w1 * 2.0;
             let r_over_s = q.clone() * &rho_r;
             let l_over_s = q.clone() * &rho_l;
-            (l_over_s.clone() * &s, r_over_s.clone() * &s, l_over_s, r_over_s)
+            (
+                l_over_s.clone() * &s,
+                r_over_s.clone() * &s,
+                l_over_s,
+                r_over_s,
+            )
         } else {
             let kq = k.clone() * &q;
             let l = Cx::real(s.re.lit(2.0)) - kq.clone();
@@ -254,6 +299,30 @@ mod tests {
         let fd = (rp - rm) / (h * 2.0);
         let d = ray.r_prime(&x);
         assert!(crate::scalar::rel_diff(&fd, &d) < 1e-45);
+    }
+
+    #[test]
+    fn deflated_rayleigh_function_matches_r_away_from_the_root() {
+        let ray = Rayleigh::new(0.534_f64).unwrap();
+        for xi in [0.05, 0.2, 0.45, 0.52] {
+            let r = ray.at_boundary(&xi, Side::Lower).r.re;
+            let d = ray.r_over_xi_minus_root(&xi) * (xi - ray.m_r());
+            assert!((r - d).abs() < 1e-14 * r.abs().max(1e-3), "{xi}: {r} {d}");
+        }
+        // at the root it is R'(m_R)
+        let mr = *ray.m_r();
+        assert!((ray.r_over_xi_minus_root(&mr) - ray.r_prime_at_root()).abs() < 1e-13);
+    }
+
+    #[test]
+    fn continuation_in_s_matches_the_lower_boundary_values() {
+        let ray = Rayleigh::new(0.534_f64).unwrap();
+        for xi in [0.1, 0.4, 0.5] {
+            let b = ray.at_boundary(&xi, Side::Lower);
+            let c = ray.continued(&Cx::new(xi * xi, 0.0));
+            assert!((b.l_over_s.clone() - &c.l_over_s).abs() < 1e-14);
+            assert!((b.p2.clone() - &c.p2).abs() < 1e-14);
+        }
     }
 
     #[test]

@@ -227,7 +227,9 @@ impl Real for f64 {
         x
     }
     fn parse_prec(s: &str, _bits: u32) -> Result<Self> {
-        s.trim().parse::<f64>().map_err(|_| Error::Parse(s.to_string()))
+        s.trim()
+            .parse::<f64>()
+            .map_err(|_| Error::Parse(s.to_string()))
     }
     #[inline]
     fn prec(&self) -> u32 {

@@ -1,0 +1,237 @@
+//! The solved case: material and indenter in, quantities computed on demand.
+//!
+//! A [`Case`] is built for one contact-zone speed p = alpha/c1 at the precision of the scalar
+//! type `T`. Building it costs one table of Omega on the nodes of the inner rule (see
+//! [`crate::omega`]); the displacement matching (Q, V) is computed on first use and cached;
+//! the contact stress, the fundamental function and the admissibility checks are computed
+//! only when asked for.
+//!
+//! Units: c1 = 1 and mu = 1 inside; results are returned dimensionless — speeds over c1,
+//! Q over c1^2 cot Theta, stresses over mu cot Theta, displacements over c1 t cot Theta.
+
+use std::sync::OnceLock;
+
+use complexfn::quadrature::CachedRules;
+use complexfn::{Cx, Rayleigh, Real};
+
+use crate::error::{invalid, Result, WedgeError};
+use crate::omega::{InnerRule, OmegaFn};
+use crate::params::{Coupling, Indenter, Material, Solution};
+
+/// The indentation problem for one contact speed, at the precision of `T`.
+#[derive(Debug)]
+pub struct Case<T> {
+    pub(crate) material: Material,
+    pub(crate) indenter: Indenter,
+    pub(crate) solution: Solution,
+    pub(crate) p: T,
+    pub(crate) beta: T,
+    pub(crate) gamma: T,
+    pub(crate) cot_theta: T,
+    pub(crate) omega: OmegaFn<T>,
+    pub(crate) inner: InnerRule<T>,
+    pub(crate) on_boundary: bool,
+    pub(crate) matching: OnceLock<std::result::Result<crate::matching::Matching<T>, WedgeError>>,
+}
+
+/// Relative tolerance, in units of the working precision's epsilon, within which
+/// gamma = cot Theta is taken as exact (the logarithmic regime boundary).
+pub const REGIME_BOUNDARY_ULPS: f64 = 8.0;
+
+impl<T: CachedRules> Case<T> {
+    /// The case for contact-zone speed `p` = alpha/c1 (0 < p < m_R), given at the working
+    /// precision. `Solution::Genuine` is refused here (it has its own solver).
+    pub fn new(material: &Material, indenter: &Indenter, p: T, solution: Solution) -> Result<Self> {
+        if solution == Solution::Genuine {
+            return Err(WedgeError::Unsupported(
+                "solution 'genuine' is not available yet; use 'paper' or 'as-printed'".into(),
+            ));
+        }
+        let m = material.m(&p);
+        let ray = Rayleigh::new(m)?;
+        let m_r = ray.m_r().clone();
+        if !(p > 0.0) || !(p < m_r) || !p.is_finite() {
+            let c1 = material.c1().value();
+            return Err(invalid(
+                "alpha",
+                format!("{} m/s", p.to_f64() * c1),
+                format!("(0, c_R) = (0, {}) m/s", m_r.to_f64() * c1),
+            ));
+        }
+        let cot_theta = indenter.cot_theta(&p);
+        let gamma = indenter.gamma().to_real(&p);
+        let beta = match indenter.coupling() {
+            Coupling::On => -cot_theta.clone(),
+            Coupling::Off => p.zero(),
+        };
+        // beta + gamma: exactly zero on the regime boundary (gamma = cot Theta within a few
+        // ulps of the working precision, or the classical beta = gamma = 0).
+        let mut bpg = beta.clone() + &gamma;
+        let tol = p.epsilon() * REGIME_BOUNDARY_ULPS * (cot_theta.clone() + &gamma);
+        let on_boundary = indenter.coupling() == Coupling::On && bpg.clone().abs() <= tol;
+        if on_boundary {
+            bpg = p.zero();
+        }
+        let bg = beta.clone() * &gamma;
+        let omega = OmegaFn::new(ray, bpg, bg);
+        let inner = InnerRule::new(&omega, &p)?;
+        Ok(Case {
+            material: material.clone(),
+            indenter: indenter.clone(),
+            solution,
+            p,
+            beta,
+            gamma,
+            cot_theta,
+            omega,
+            inner,
+            on_boundary,
+            matching: OnceLock::new(),
+        })
+    }
+
+    /// The case for a contact-zone speed `alpha` in m/s, at the precision of `like`.
+    pub fn with_alpha(
+        material: &Material,
+        indenter: &Indenter,
+        alpha: f64,
+        like: &T,
+        solution: Solution,
+    ) -> Result<Self> {
+        if !alpha.is_finite() {
+            return Err(invalid("alpha", alpha, "a finite speed in (0, c_R) m/s"));
+        }
+        let a = crate::params::Param::from_f64(alpha).to_real(like);
+        let p = a / material.c1().to_real(like);
+        Case::new(material, indenter, p, solution)
+    }
+}
+
+impl<T: Real> Case<T> {
+    /// p = alpha/c1.
+    pub fn p(&self) -> &T {
+        &self.p
+    }
+    /// m = c2/c1.
+    pub fn m(&self) -> &T {
+        self.omega.rayleigh().m()
+    }
+    /// m_R = c_R/c1.
+    pub fn m_r(&self) -> &T {
+        self.omega.rayleigh().m_r()
+    }
+    /// The coupling constant beta (-cot Theta, or 0 when uncoupled).
+    pub fn beta(&self) -> &T {
+        &self.beta
+    }
+    /// The friction coefficient gamma.
+    pub fn gamma(&self) -> &T {
+        &self.gamma
+    }
+    /// cot Theta.
+    pub fn cot_theta(&self) -> &T {
+        &self.cot_theta
+    }
+    /// The solution variant.
+    pub fn solution(&self) -> Solution {
+        self.solution
+    }
+    /// The material.
+    pub fn material(&self) -> &Material {
+        &self.material
+    }
+    /// The indenter.
+    pub fn indenter(&self) -> &Indenter {
+        &self.indenter
+    }
+    /// Omega as a function (eq (31)).
+    pub fn omega_fn(&self) -> &OmegaFn<T> {
+        &self.omega
+    }
+    /// The inner rule behind b, S0, Lambda0.
+    pub fn inner(&self) -> &InnerRule<T> {
+        &self.inner
+    }
+    /// Whether gamma = cot Theta was detected (coupled case), where Omega = 0 identically.
+    pub fn on_regime_boundary(&self) -> bool {
+        self.on_boundary
+    }
+    /// Omega(xi), eq (31), for 0 <= xi < m.
+    pub fn omega(&self, xi: &T) -> T {
+        self.omega.omega(xi)
+    }
+    /// Omega0, eq (37).
+    pub fn omega0(&self) -> T {
+        self.omega.omega0().clone()
+    }
+    /// b(xi), eq (33), for 0 <= xi < m (continued analytically past p).
+    pub fn b(&self, xi: &T) -> T {
+        self.inner.b(&self.omega, xi)
+    }
+    /// S0 = b(0), eq (44).
+    pub fn s0(&self) -> T {
+        self.inner.s0()
+    }
+    /// Lambda0(zeta), eq (38), off the segment [-p, p].
+    pub fn lambda0(&self, zeta: &Cx<T>) -> Cx<T> {
+        self.inner.lambda0(&self.omega, zeta)
+    }
+
+    /// The fundamental function H(zeta) of eq (36) off the segment [-p, p]:
+    /// zeta^(1 - 2 Omega0) (zeta - p)^a (zeta + p)^a exp(Lambda0(zeta)), a = -1/2 + Omega0,
+    /// each power principal, so that H is analytic off [-p, p] (the jumps of the three
+    /// powers cancel on (-inf, -p)) and H(v) > 0 for v > p.
+    pub fn h(&self, zeta: &Cx<T>) -> Cx<T> {
+        let o0 = self.omega0();
+        let one = o0.one();
+        let e1 = one.clone() - o0.clone() * 2.0;
+        let a = o0.clone() - 0.5;
+        let zp = zeta.clone().add_re(&(-self.p.clone()));
+        let zm = zeta.clone().add_re(&self.p);
+        let pow = zeta.clone().powf(&e1) * zp.powf(&a) * zm.powf(&a);
+        pow * self.lambda0(zeta).exp()
+    }
+
+    /// H(v)/v for real v in (p, 1), where H is real and positive.
+    ///
+    /// For p < v < m, Lambda0(v) = b(v) + omega(v^2) ln((v^2 - p^2)/v^2) with b and Omega
+    /// continued analytically (no near-singular inner integral), so
+    /// H(v) = v^(1 - 2 Omega(v)) (v^2 - p^2)^(-1/2 + Omega(v)) e^(b(v)).
+    /// For v >= m the integral form of Lambda0 is used. `v_minus_p` is v - p to full
+    /// relative accuracy.
+    pub fn h_over_v_outside(&self, v: &T, v_minus_p: &T) -> T {
+        let s = v.clone().sqr();
+        let vp = v_minus_p.clone() * (v.clone() + &self.p);
+        if v < self.m() {
+            let om = self.omega.omega(v);
+            let om_rel = om.clone() - self.omega.omega0();
+            let b = self.inner.b_with(&s, &om_rel);
+            let e = om.clone() - 0.5;
+            (v.clone().ln() * (om * -2.0) + vp.ln() * e + b).exp()
+        } else {
+            let o0 = self.omega0();
+            let lam = self.inner.lambda0_real_outside(&s);
+            (v.clone().ln() * (o0.clone() * -2.0) + vp.ln() * (o0 - 0.5) + lam).exp()
+        }
+    }
+
+    /// X(v) = v^(1 - 2 Omega) (p^2 - v^2)^(-1/2 + Omega) e^(b(v)) on the contact 0 < v < p, the
+    /// modulus of H^{+-}(v) (corrected eq (32): H^{+-} = -+ i X e^(+- i pi Omega)), together with
+    /// Omega(v). `p_minus_v` is p - v to full relative accuracy.
+    pub fn x_on_contact(&self, v: &T, p_minus_v: &T) -> (T, T) {
+        let om = self.omega.omega(v);
+        let s = v.clone().sqr();
+        let om_rel = om.clone() - self.omega.omega0();
+        let b = self.inner.b_with(&s, &om_rel);
+        let pv = p_minus_v.clone() * (v.clone() + &self.p);
+        let one = om.one();
+        let x =
+            (v.clone().ln() * (one - om.clone() * 2.0) + pv.ln() * (om.clone() - 0.5) + b).exp();
+        (x, om)
+    }
+
+    /// The material's Rayleigh family.
+    pub fn rayleigh(&self) -> &Rayleigh<T> {
+        self.omega.rayleigh()
+    }
+}

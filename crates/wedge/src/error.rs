@@ -1,0 +1,61 @@
+//! Typed errors of the wedge crate.
+
+use thiserror::Error;
+
+/// Errors of the wedge solution. Parameter errors name the parameter, the offending value and
+/// the admissible range, so that the command line can print them as one line.
+#[derive(Debug, Clone, Error, PartialEq)]
+pub enum WedgeError {
+    /// A parameter outside its admissible range, or not finite.
+    #[error("invalid {name} = {value}: admissible range is {range}")]
+    InvalidParameter {
+        /// Parameter name as the documentation and command line spell it.
+        name: &'static str,
+        /// The offending value.
+        value: String,
+        /// The admissible range.
+        range: String,
+    },
+    /// A quadrature, root solve or convergence check failed to reach its tolerance.
+    #[error("{what} did not converge: relative error {reached:e} (asked {asked:e})")]
+    NoConvergence {
+        /// What was being computed.
+        what: String,
+        /// Relative error reached.
+        reached: f64,
+        /// Relative error asked for.
+        asked: f64,
+    },
+    /// The requested solution variant or quantity is not available for this case.
+    #[error("{0}")]
+    Unsupported(String),
+    /// An error of the complex-function layer.
+    #[error(transparent)]
+    Complex(#[from] complexfn::Error),
+}
+
+/// Result alias of the wedge crate.
+pub type Result<T> = std::result::Result<T, WedgeError>;
+
+pub(crate) fn invalid(
+    name: &'static str,
+    value: impl std::fmt::Display,
+    range: impl Into<String>,
+) -> WedgeError {
+    WedgeError::InvalidParameter {
+        name,
+        value: value.to_string(),
+        range: range.into(),
+    }
+}
+
+pub(crate) fn from_quad(what: &str, e: complexfn::Error) -> WedgeError {
+    match e {
+        complexfn::Error::NoConvergence { reached, asked, .. } => WedgeError::NoConvergence {
+            what: what.to_string(),
+            reached,
+            asked,
+        },
+        other => WedgeError::Complex(other),
+    }
+}

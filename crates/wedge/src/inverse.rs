@@ -1,0 +1,129 @@
+//! The inverse problem: the contact-zone speed alpha for a given indenter speed V.
+//!
+//! V/(c1 cot Theta) is an increasing function of p = alpha/c1 on (0, m_R) (it is checked at
+//! the bracket ends, and the solve fails with a clear error if the target is outside the
+//! range reached). The root is bracketed in f64 first (Illinois regula falsi with bisection
+//! safeguard), then polished at the working precision by the same iteration started from a
+//! narrow bracket around the f64 root.
+
+use complexfn::quadrature::CachedRules;
+use complexfn::Real;
+
+use crate::case::Case;
+use crate::error::{invalid, Result, WedgeError};
+use crate::params::{Indenter, Material, Param, Solution};
+
+/// Smallest and largest p = alpha/c1 used to bracket the inverse solve, as fractions of m_R.
+pub const BRACKET: (f64, f64) = (1e-6, 1.0 - 1e-6);
+
+fn illinois<T: Real, F: FnMut(&T) -> Result<T>>(
+    mut lo: T,
+    mut flo: T,
+    mut hi: T,
+    mut fhi: T,
+    tol: &T,
+    mut f: F,
+) -> Result<T> {
+    let mut side = 0i32;
+    for _ in 0..200 {
+        let width = hi.clone() - &lo;
+        if width <= tol.clone() * (lo.clone().abs() + hi.clone().abs()) {
+            break;
+        }
+        let mut x = (lo.clone() * &fhi - hi.clone() * &flo) / (fhi.clone() - &flo);
+        if !(x > lo && x < hi) {
+            x = (lo.clone() + &hi) / 2.0;
+        }
+        let fx = f(&x)?;
+        if fx == 0.0 {
+            return Ok(x);
+        }
+        if (fx < 0.0) == (flo < 0.0) {
+            lo = x;
+            flo = fx;
+            if side == -1 {
+                fhi /= 2.0;
+            }
+            side = -1;
+        } else {
+            hi = x;
+            fhi = fx;
+            if side == 1 {
+                flo /= 2.0;
+            }
+            side = 1;
+        }
+    }
+    Ok((lo.clone() * &fhi - hi * &flo) / (fhi - flo))
+}
+
+/// The case whose indenter speed is `speed` (m/s), at the precision of `like`.
+pub fn case_for_speed<T: CachedRules>(
+    material: &Material,
+    indenter: &Indenter,
+    speed: f64,
+    like: &T,
+    solution: Solution,
+) -> Result<Case<T>> {
+    if !(speed.is_finite() && speed > 0.0) {
+        return Err(invalid("speed", speed, "(0, inf) m/s"));
+    }
+    // f64 solve
+    let m_r = complexfn::Rayleigh::new(material.m(&0.0_f64))?
+        .m_r()
+        .to_owned();
+    let target64 = speed / (material.c1().value() * indenter.cot_theta(&0.0_f64));
+    let g64 = |p: &f64| -> Result<f64> {
+        Ok(Case::new(material, indenter, *p, solution)?.v_hat()? - target64)
+    };
+    let (lo, hi) = (m_r * BRACKET.0, m_r * BRACKET.1);
+    let (flo, fhi) = (g64(&lo)?, g64(&hi)?);
+    if !(flo < 0.0 && fhi > 0.0) {
+        let c = material.c1().value() * indenter.cot_theta(&0.0_f64);
+        return Err(WedgeError::InvalidParameter {
+            name: "speed",
+            value: format!("{speed} m/s"),
+            range: format!(
+                "({}, {}) m/s, the indenter speeds reached for alpha in (0, c_R)",
+                (flo + target64) * c,
+                (fhi + target64) * c
+            ),
+        });
+    }
+    let p64 = illinois(lo, flo, hi, fhi, &1e-16, g64)?;
+    if like.prec() <= 53 {
+        return Case::with_alpha(
+            material,
+            indenter,
+            p64 * material.c1().value(),
+            like,
+            solution,
+        )
+        .or_else(|_| Case::new(material, indenter, like.lit(p64), solution));
+    }
+    // polish at the working precision
+    let c1 = material.c1().to_real(like);
+    let target = Param::from_f64(speed).to_real(like) / (c1 * indenter.cot_theta(like));
+    let g = |p: &T| -> Result<T> {
+        Ok(Case::new(material, indenter, p.clone(), solution)?.v_hat()? - &target)
+    };
+    let mut w = 1e-13;
+    let (mut lo, mut hi);
+    loop {
+        lo = like.lit(p64 * (1.0 - w));
+        hi = like.lit(p64 * (1.0 + w)).min(like.lit(m_r * BRACKET.1));
+        let (a, b) = (g(&lo)?, g(&hi)?);
+        if a < 0.0 && b > 0.0 {
+            let p = illinois(lo, a, hi, b, &like.epsilon(), g)?;
+            return Case::new(material, indenter, p, solution);
+        }
+        w *= 100.0;
+        if w > 0.1 {
+            return Err(WedgeError::NoConvergence {
+                what: "inverse solve for alpha".into(),
+                reached: w,
+                asked: like.epsilon().to_f64(),
+            });
+        }
+    }
+}

@@ -1,0 +1,220 @@
+//! Input parameters: material, indenter geometry and friction, solution variant.
+//!
+//! Inputs are kept as the decimal numbers the caller gave (shortest round-trip form of an
+//! `f64`, or a string), and converted to the working precision only when a case is built,
+//! so that 1870.83 means the decimal 1870.83 at 300 bits, not its nearest double.
+
+use complexfn::Real;
+
+use crate::error::{invalid, Result};
+
+/// A real input parameter: its decimal text and its nearest double.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Param {
+    text: String,
+    value: f64,
+}
+
+impl Param {
+    /// From a double (its shortest round-trip decimal is kept as the text).
+    pub fn from_f64(x: f64) -> Self {
+        Param {
+            text: format!("{x}"),
+            value: x,
+        }
+    }
+    /// From decimal text; `name` goes into the error message if it does not parse or is not
+    /// finite.
+    pub fn parse(name: &'static str, s: &str) -> Result<Self> {
+        let value: f64 = s
+            .trim()
+            .parse()
+            .map_err(|_| invalid(name, s, "a finite decimal number"))?;
+        if !value.is_finite() {
+            return Err(invalid(name, s, "a finite decimal number"));
+        }
+        Ok(Param {
+            text: s.trim().to_string(),
+            value,
+        })
+    }
+    /// The nearest double.
+    pub fn value(&self) -> f64 {
+        self.value
+    }
+    /// The decimal text.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+    /// The value at the precision of `like` (parsed from the decimal text).
+    pub fn to_real<T: Real>(&self, like: &T) -> T {
+        T::parse_prec(&self.text, like.prec()).unwrap_or_else(|_| like.lit(self.value))
+    }
+}
+
+impl From<f64> for Param {
+    fn from(x: f64) -> Self {
+        Param::from_f64(x)
+    }
+}
+
+/// Wave speeds of the elastic half-plane (plane strain), in m/s.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    c1: Param,
+    c2: Param,
+}
+
+impl Material {
+    /// Dilatational speed `c1` and shear speed `c2` (m/s): both finite and positive, and
+    /// c2 < c1 sqrt(3)/2 (Poisson's ratio above -1).
+    pub fn new(c1: impl Into<Param>, c2: impl Into<Param>) -> Result<Self> {
+        let (c1, c2) = (c1.into(), c2.into());
+        if !(c1.value.is_finite() && c1.value > 0.0) {
+            return Err(invalid("c1", c1.text(), "(0, inf) m/s"));
+        }
+        let lim = c1.value * 0.75_f64.sqrt();
+        if !(c2.value.is_finite() && c2.value > 0.0 && c2.value < lim) {
+            return Err(invalid(
+                "c2",
+                c2.text(),
+                format!("(0, c1 sqrt(3)/2) = (0, {lim}) m/s"),
+            ));
+        }
+        Ok(Material { c1, c2 })
+    }
+
+    /// From Poisson's ratio nu in (-1, 1/2) and the shear speed c2 (m/s):
+    /// (c1/c2)^2 = 2 (1 - nu)/(1 - 2 nu).
+    pub fn from_poisson(nu: f64, c2: impl Into<Param>) -> Result<Self> {
+        if !(nu.is_finite() && nu > -1.0 && nu < 0.5) {
+            return Err(invalid("poisson", nu, "(-1, 0.5)"));
+        }
+        let c2 = c2.into();
+        if !(c2.value.is_finite() && c2.value > 0.0) {
+            return Err(invalid("c2", c2.text(), "(0, inf) m/s"));
+        }
+        let c1 = c2.value * (2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)).sqrt();
+        Material::new(c1, c2)
+    }
+
+    /// The reference paper's material: c1 = 1870.83 m/s, c2 = 1000 m/s (c_R = 927.41 m/s).
+    pub fn paper() -> Self {
+        Material::new(1870.83, 1000.0).expect("valid")
+    }
+    /// c1 in m/s.
+    pub fn c1(&self) -> &Param {
+        &self.c1
+    }
+    /// c2 in m/s.
+    pub fn c2(&self) -> &Param {
+        &self.c2
+    }
+    /// m = c2/c1 at the precision of `like`.
+    pub fn m<T: Real>(&self, like: &T) -> T {
+        self.c2.to_real(like) / self.c1.to_real(like)
+    }
+    /// Poisson's ratio nu = (1 - 2 m^2)/(2 (1 - m^2)).
+    pub fn poisson(&self) -> f64 {
+        let m2 = (self.c2.value / self.c1.value).powi(2);
+        (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2))
+    }
+}
+
+/// Whether the tangential surface displacement enters the contact condition (7).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Coupling {
+    /// beta = -cot Theta (the paper's coupled formulation).
+    On,
+    /// beta = 0 (the classical formulation).
+    Off,
+}
+
+/// The rigid wedge: half-angle Theta (degrees, in (0, 90)), Coulomb friction gamma >= 0,
+/// and the coupling of eq (7).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Indenter {
+    theta_deg: Param,
+    gamma: Param,
+    coupling: Coupling,
+}
+
+impl Indenter {
+    /// Half-angle in degrees (0 < Theta < 90), friction coefficient gamma (finite, >= 0).
+    pub fn new(
+        theta_deg: impl Into<Param>,
+        gamma: impl Into<Param>,
+        coupling: Coupling,
+    ) -> Result<Self> {
+        let (theta_deg, gamma) = (theta_deg.into(), gamma.into());
+        if !(theta_deg.value.is_finite() && theta_deg.value > 0.0 && theta_deg.value < 90.0) {
+            return Err(invalid("theta_deg", theta_deg.text(), "(0, 90) degrees"));
+        }
+        if !(gamma.value.is_finite() && gamma.value >= 0.0) {
+            return Err(invalid("gamma", gamma.text(), "[0, inf)"));
+        }
+        Ok(Indenter {
+            theta_deg,
+            gamma,
+            coupling,
+        })
+    }
+    /// The classical indenter: frictionless and uncoupled (Theta enters only through the
+    /// normalisation by cot Theta).
+    pub fn classical(theta_deg: impl Into<Param>) -> Result<Self> {
+        Indenter::new(theta_deg, 0.0, Coupling::Off)
+    }
+    /// Half-angle in degrees.
+    pub fn theta_deg(&self) -> &Param {
+        &self.theta_deg
+    }
+    /// Friction coefficient.
+    pub fn gamma(&self) -> &Param {
+        &self.gamma
+    }
+    /// Coupling.
+    pub fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+    /// cot Theta at the precision of `like`.
+    pub fn cot_theta<T: Real>(&self, like: &T) -> T {
+        let th = self.theta_deg.to_real(like) * like.pi() / 180.0;
+        let (s, c) = th.sin_cos();
+        c / s
+    }
+}
+
+/// Which solution of the problem a result belongs to; named in every output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Solution {
+    /// The paper's construction (23), (39) with the displacement matching (53)-(57) taken
+    /// exactly as printed: principal values only (no Rayleigh-pole terms), |p_k| read in
+    /// (56b), (57b). Reproduces the printed curves.
+    AsPrinted,
+    /// The paper's construction made consistent: the matching includes the Rayleigh-pole
+    /// terms, so (7) holds in the paper's representation (18). Genuine when gamma = 0; carries
+    /// a tangential dislocation at the apex when gamma > 0.
+    Paper,
+    /// The genuine half-plane solution (no apex dislocation).
+    Genuine,
+}
+
+impl Solution {
+    /// The name used in outputs and on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Solution::AsPrinted => "as-printed",
+            Solution::Paper => "paper",
+            Solution::Genuine => "genuine",
+        }
+    }
+    /// Parse a command-line name.
+    pub fn parse(s: &str) -> Result<Self> {
+        match s {
+            "as-printed" => Ok(Solution::AsPrinted),
+            "paper" => Ok(Solution::Paper),
+            "genuine" => Ok(Solution::Genuine),
+            _ => Err(invalid("solution", s, "paper | as-printed | genuine")),
+        }
+    }
+}
