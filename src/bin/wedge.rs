@@ -1,5 +1,327 @@
-//! Command line for the wedge-indentation solution.
-fn main() {
-    eprintln!("wedge: the command line is not available yet");
-    std::process::exit(2);
+//! `wedge`: the dynamic wedge-indentation solution from the command line.
+//!
+//! Units: speeds in m/s, the half-angle in degrees. Outputs are dimensionless and their names
+//! say how: `v_over_c1_cot_theta` = V/(c1 cot Theta), `force_over_a_mu_cot_theta` =
+//! P/(alpha t mu cot Theta), `sigma_over_mu_cot_theta`, `r_over_alpha_t`, ...
+//! Every output names its solution variant. Errors: one line on stderr, exit code 2.
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use complexfn::Precision;
+use dyncontact::{linspace, num, parse_list, parse_range, solve, solve_report, stress_profile, CaseInput, Speed, SOLVE_KEYS, VERSION};
+use indicatif::{ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use rug::Float;
+use serde_json::{Map, Value};
+use wedge::{Coupling, Indenter, Material, Param, Result, Solution, WedgeError};
+
+/// Dynamic indentation of an elastic half-plane by a rigid wedge (plane strain), with
+/// Coulomb friction and tangential-displacement coupling.
+///
+/// Conventions: c1, c2 dilatational and shear wave speeds (m/s); Theta the wedge half-angle
+/// (degrees); alpha the contact-zone expansion speed (0 < alpha < c_R); V the indenter speed;
+/// gamma the friction coefficient; coupling on means beta = -cot Theta in the contact
+/// condition u_theta + beta u_r = -V t + r cot Theta. Results are dimensionless: speeds over
+/// c1 or V, stresses over mu cot Theta, displacements over c1 t cot Theta or V t.
+#[derive(Parser, Debug)]
+#[command(name = "wedge", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Solve one case: Q, V (or alpha), force, apex regime, edge velocities, admissibility.
+    Solve {
+        #[command(flatten)]
+        case: CaseArgs,
+        #[command(flatten)]
+        speed: SpeedArgs,
+        #[command(flatten)]
+        out: OutArgs,
+    },
+    /// Contact stress sigma_theta/(mu cot Theta) at r/(alpha t) = the given fractions.
+    Stress {
+        #[command(flatten)]
+        case: CaseArgs,
+        #[command(flatten)]
+        speed: SpeedArgs,
+        /// Comma-separated fractions r/(alpha t) in (0, 1].
+        #[arg(long)]
+        at: String,
+        #[command(flatten)]
+        out: OutArgs,
+    },
+    /// The alpha-V relation (and force, Omega0, regime) over evenly spaced alpha.
+    Curve {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// min,max,steps of alpha in m/s (0 < min < max < c_R).
+        #[arg(long = "alpha-range", allow_hyphen_values = true)]
+        alpha_range: String,
+        /// Digits (omit for the f64 path).
+        #[arg(long)]
+        digits: Option<u32>,
+        /// CSV with '#' header lines (the default); --json for a JSON array instead.
+        #[arg(long, conflicts_with = "json")]
+        csv: bool,
+        /// JSON array of objects.
+        #[arg(long)]
+        json: bool,
+    },
+}
+
+#[derive(Args, Debug, Clone)]
+struct CaseArgs {
+    /// Dilatational wave speed c1 in m/s.
+    #[arg(long, default_value = "1870.83", conflicts_with = "poisson", allow_hyphen_values = true)]
+    c1: String,
+    /// Shear wave speed c2 in m/s (must be below c1 sqrt(3)/2).
+    #[arg(long, default_value = "1000", allow_hyphen_values = true)]
+    c2: String,
+    /// Poisson's ratio in (-1, 0.5), instead of --c1 (c1 then follows from c2).
+    #[arg(long, allow_hyphen_values = true)]
+    poisson: Option<f64>,
+    /// Wedge half-angle Theta in degrees, in (0, 90).
+    #[arg(long = "theta-deg", allow_hyphen_values = true)]
+    theta_deg: String,
+    /// Friction coefficient gamma >= 0, or `cot` for exactly cot Theta (the regime boundary).
+    #[arg(long, default_value = "0", allow_hyphen_values = true)]
+    gamma: String,
+    /// Displacement coupling: on (beta = -cot Theta) or off (beta = 0).
+    #[arg(long, value_enum, default_value_t = CouplingArg::On)]
+    coupling: CouplingArg,
+    /// Solution variant.
+    #[arg(long, default_value = "paper")]
+    solution: String,
+}
+
+#[derive(Args, Debug, Clone)]
+#[group(required = true, multiple = false)]
+struct SpeedArgs {
+    /// Contact-zone expansion speed alpha in m/s, 0 < alpha < c_R.
+    #[arg(long, allow_hyphen_values = true)]
+    alpha: Option<f64>,
+    /// Indenter speed V in m/s (alpha is then found by a bracketed root solve).
+    #[arg(long, allow_hyphen_values = true)]
+    speed: Option<f64>,
+}
+
+#[derive(Args, Debug, Clone)]
+struct OutArgs {
+    /// Significant digits (arbitrary precision); omit for the f64 path.
+    #[arg(long)]
+    digits: Option<u32>,
+    /// Print JSON instead of a table.
+    #[arg(long)]
+    json: bool,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug)]
+enum CouplingArg {
+    On,
+    Off,
+}
+
+fn input(case: &CaseArgs, digits: Option<u32>) -> Result<CaseInput> {
+    let c2 = Param::parse("c2", &case.c2)?;
+    let material = match case.poisson {
+        Some(nu) => Material::from_poisson(nu, c2)?,
+        None => Material::new(Param::parse("c1", &case.c1)?, c2)?,
+    };
+    let theta = Param::parse("theta_deg", &case.theta_deg)?;
+    let coupling = match case.coupling {
+        CouplingArg::On => Coupling::On,
+        CouplingArg::Off => Coupling::Off,
+    };
+    let indenter = if case.gamma.trim() == "cot" {
+        let probe = Indenter::new(theta.clone(), 0.0, coupling)?;
+        let cot = probe.cot_theta(&Float::with_val(2048, 0));
+        let text = cot.to_string_radix(10, Some(600));
+        Indenter::new(theta, Param::parse("gamma", &text)?, coupling)?
+    } else {
+        Indenter::new(theta, Param::parse("gamma", &case.gamma)?, coupling)?
+    };
+    if let Some(d) = digits {
+        if d == 0 || d > 2000 {
+            return Err(WedgeError::InvalidParameter {
+                name: "digits",
+                value: d.to_string(),
+                range: "1 ..= 2000".into(),
+            });
+        }
+    }
+    Ok(CaseInput {
+        material,
+        indenter,
+        solution: Solution::parse(&case.solution)?,
+        digits,
+    })
+}
+
+fn speed_of(s: &SpeedArgs) -> Speed {
+    match (s.alpha, s.speed) {
+        (Some(a), _) => Speed::Alpha(a),
+        (None, Some(v)) => Speed::Indenter(v),
+        (None, None) => unreachable!("clap requires one of --alpha, --speed"),
+    }
+}
+
+fn print_table(map: &Map<String, Value>) {
+    let w = map.keys().map(|k| k.len()).max().unwrap_or(0);
+    for (k, v) in map {
+        let s = match v {
+            Value::String(s) => s.clone(),
+            other => other.to_string(),
+        };
+        println!("{k:<w$}  {s}");
+    }
+}
+
+fn header_lines(input: &CaseInput) -> Vec<String> {
+    let args: Vec<String> = std::env::args().collect();
+    vec![
+        format!("# dyncontact {VERSION}: dynamic wedge indentation of an elastic half-plane"),
+        format!("# command: {}", args.join(" ")),
+        format!(
+            "# material: c1 = {} m/s, c2 = {} m/s; theta = {} deg, gamma = {}, coupling = {:?}; solution = {}",
+            input.material.c1().text(),
+            input.material.c2().text(),
+            input.indenter.theta_deg().text(),
+            input.indenter.gamma().text(),
+            input.indenter.coupling(),
+            input.solution.name()
+        ),
+        format!(
+            "# precision: {}; quadrature: tanh-sinh (outer, tolerance eps^0.9), Gauss-Legendre in u = v^2 (inner, converged by doubling)",
+            match input.digits {
+                None => "f64".to_string(),
+                Some(d) => format!("{d} digits"),
+            }
+        ),
+        "# normalisation: speeds in m/s; v_over_c1_cot_theta = V/(c1 cot Theta); force_over_a_mu_cot_theta = P/(alpha t mu cot Theta); velocities over V".into(),
+    ]
+}
+
+fn curve_row<T: complexfn::quadrature::CachedRules>(input: &CaseInput, alpha: f64, like: &T) -> Result<Map<String, Value>> {
+    let case = input.case(Speed::Alpha(alpha), like)?;
+    solve_report(&case, input.out_digits(), false)
+}
+
+fn run(cli: Cli) -> Result<()> {
+    let stdout = std::io::stdout();
+    match cli.command {
+        Command::Solve { case, speed, out } => {
+            let inp = input(&case, out.digits)?;
+            let r = solve(&inp, speed_of(&speed), true)?;
+            if out.json {
+                println!("{}", Value::Object(r));
+            } else {
+                print_table(&r);
+            }
+        }
+        Command::Stress { case, speed, at, out } => {
+            let inp = input(&case, out.digits)?;
+            let at = parse_list("at", &at)?;
+            let digits = inp.out_digits();
+            let (values, err) = match inp.precision()? {
+                Precision::F64 => {
+                    let c = inp.case(speed_of(&speed), &0.0_f64)?;
+                    stress_profile(&c, &at, digits)?
+                }
+                Precision::Bits(b) => {
+                    let c = inp.case(speed_of(&speed), &Float::with_val(b, 0))?;
+                    stress_profile(&c, &at, digits)?
+                }
+            };
+            let mut m = Map::new();
+            m.insert("solution".into(), Value::String(inp.solution.name().into()));
+            m.insert("r_over_alpha_t".into(), Value::Array(at.iter().map(|x| num(&format!("{x}"))).collect()));
+            m.insert("sigma_over_mu_cot_theta".into(), Value::Array(values));
+            m.insert("error_estimate".into(), num(&format!("{err:e}")));
+            m.insert("digits".into(), Value::Number(digits.into()));
+            if out.json {
+                println!("{}", Value::Object(m));
+            } else {
+                println!("solution: {}", inp.solution.name());
+                println!("{:>16}  sigma/(mu cot Theta)", "r/(alpha t)");
+                if let (Some(Value::Array(a)), Some(Value::Array(s))) = (m.get("r_over_alpha_t"), m.get("sigma_over_mu_cot_theta")) {
+                    for (x, y) in a.iter().zip(s) {
+                        println!("{x:>16}  {y}");
+                    }
+                }
+                println!("relative error estimate: {err:.1e}");
+            }
+        }
+        Command::Curve {
+            case,
+            alpha_range,
+            digits,
+            csv: _,
+            json,
+        } => {
+            let inp = input(&case, digits)?;
+            let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
+            let alphas = linspace(lo, hi, n);
+            let bar = ProgressBar::new(n as u64);
+            bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} alpha values").unwrap_or_else(|_| ProgressStyle::default_bar()));
+            let prec = inp.precision()?;
+            let rows: Vec<Result<Map<String, Value>>> = alphas
+                .par_iter()
+                .map(|&a| {
+                    let r = match prec {
+                        Precision::F64 => curve_row(&inp, a, &0.0_f64),
+                        Precision::Bits(b) => curve_row(&inp, a, &Float::with_val(b, 0)),
+                    };
+                    bar.inc(1);
+                    r
+                })
+                .collect();
+            bar.finish_and_clear();
+            let rows: Vec<Map<String, Value>> = rows.into_iter().collect::<Result<_>>()?;
+            let mut lock = stdout.lock();
+            if json {
+                let arr = Value::Array(rows.into_iter().map(Value::Object).collect());
+                writeln!(lock, "{arr}").ok();
+            } else {
+                for l in header_lines(&inp) {
+                    writeln!(lock, "{l}").ok();
+                }
+                writeln!(lock, "{}", SOLVE_KEYS.join(",")).ok();
+                for r in rows {
+                    let cells: Vec<String> = SOLVE_KEYS
+                        .iter()
+                        .map(|k| match r.get(*k) {
+                            Some(Value::String(s)) => s.clone(),
+                            Some(Value::Null) | None => String::new(),
+                            Some(v) => v.to_string(),
+                        })
+                        .collect();
+                    writeln!(lock, "{}", cells.join(",")).ok();
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("wedge: {e}");
+            ExitCode::from(2)
+        }
+    }
 }

@@ -115,6 +115,8 @@ pub trait Real:
     fn prec(&self) -> u32;
     /// Nearest `f64`.
     fn to_f64(&self) -> f64;
+    /// Decimal scientific notation with `digits` significant digits (a valid JSON number).
+    fn to_decimal(&self, digits: usize) -> String;
 
     /// `x` at the precision of `self`.
     #[inline]
@@ -239,6 +241,9 @@ impl Real for f64 {
     fn to_f64(&self) -> f64 {
         *self
     }
+    fn to_decimal(&self, digits: usize) -> String {
+        format!("{:.*e}", digits.clamp(1, 17) - 1, self)
+    }
     #[inline]
     fn pi(&self) -> Self {
         std::f64::consts::PI
@@ -350,6 +355,12 @@ impl Real for Float {
     #[inline]
     fn to_f64(&self) -> f64 {
         Float::to_f64(self)
+    }
+    fn to_decimal(&self, digits: usize) -> String {
+        if self.is_zero() {
+            return "0".into();
+        }
+        self.to_string_radix(10, Some(digits.max(1)))
     }
     fn pi(&self) -> Self {
         Float::with_val(Float::prec(self), Constant::Pi)

@@ -1,0 +1,323 @@
+//! Reports of solved cases for the `wedge` command line and the `figures` generator:
+//! one place that turns a [`wedge::Case`] into named, dimensionless numbers.
+//!
+//! Key names (JSON keys and CSV columns) are part of the interface; they spell out the
+//! normalisation: `v_over_c1_cot_theta` is V/(c1 cot Theta), `force_over_a_mu_cot_theta` is
+//! P/(alpha t mu cot Theta), and so on.
+#![warn(missing_docs)]
+
+use complexfn::quadrature::CachedRules;
+use complexfn::{Precision, Real};
+use rug::Float;
+use serde_json::{Map, Number, Value};
+use wedge::{Case, Coupling, Indenter, Material, Result, Solution, WedgeError};
+
+/// Library version, written into every output header.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// Guard bits added to the precision that holds the requested digits.
+pub const GUARD_BITS: u32 = 32;
+
+/// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Speed {
+    /// Contact-zone expansion speed alpha, 0 < alpha < c_R.
+    Alpha(f64),
+    /// Indenter speed V > 0 (alpha found by the inverse solve).
+    Indenter(f64),
+}
+
+/// Everything that defines one case.
+#[derive(Clone, Debug)]
+pub struct CaseInput {
+    /// Material.
+    pub material: Material,
+    /// Indenter.
+    pub indenter: Indenter,
+    /// Solution variant.
+    pub solution: Solution,
+    /// Requested significant digits; `None` for the f64 path.
+    pub digits: Option<u32>,
+}
+
+impl CaseInput {
+    /// The working precision: f64, or enough bits for `digits` plus [`GUARD_BITS`].
+    pub fn precision(&self) -> Result<Precision> {
+        match self.digits {
+            None => Ok(Precision::F64),
+            Some(d) => Ok(Precision::from_digits(d, GUARD_BITS)?),
+        }
+    }
+    /// Digits printed: the requested ones, or 16 for the f64 path.
+    pub fn out_digits(&self) -> usize {
+        self.digits.map(|d| d as usize).unwrap_or(16)
+    }
+    /// Build the case at the precision of `like`.
+    pub fn case<T: CachedRules>(&self, speed: Speed, like: &T) -> Result<Case<T>> {
+        match speed {
+            Speed::Alpha(a) => Case::with_alpha(&self.material, &self.indenter, a, like, self.solution),
+            Speed::Indenter(v) => wedge::case_for_speed(&self.material, &self.indenter, v, like, self.solution),
+        }
+    }
+}
+
+/// A JSON number with exactly the digits given (arbitrary precision).
+pub fn num(s: &str) -> Value {
+    match s.parse::<Number>() {
+        Ok(n) => Value::Number(n),
+        Err(_) => Value::Null,
+    }
+}
+
+fn real<T: Real>(x: &T, digits: usize) -> Value {
+    if x.is_finite() {
+        num(&x.to_decimal(digits))
+    } else {
+        Value::Null
+    }
+}
+
+fn f(x: f64) -> Value {
+    if x.is_finite() {
+        num(&format!("{x:e}"))
+    } else {
+        Value::Null
+    }
+}
+
+/// The keys of a `solve` report, in order (also the CSV columns of `curve`).
+pub const SOLVE_KEYS: &[&str] = &[
+    "solution",
+    "alpha",
+    "speed",
+    "p",
+    "m",
+    "m_r",
+    "omega0",
+    "s0",
+    "regime",
+    "apex_exponent",
+    "apex_amplitude_over_mu_cot_theta",
+    "q_over_c1sq_cot_theta",
+    "v_over_c1_cot_theta",
+    "force_over_a_mu_cot_theta",
+    "edge_slip_velocity_over_speed",
+    "edge_following_rate_over_speed",
+    "apex_u_r_over_speed_t",
+    "slip_direction_ok",
+    "contact_compressive",
+    "no_interpenetration",
+    "error_estimate",
+    "digits",
+];
+
+/// The `solve` report of a case: every quantity of [`SOLVE_KEYS`].
+pub fn solve_report<T: CachedRules>(case: &Case<T>, digits: usize, full: bool) -> Result<Map<String, Value>> {
+    let c1 = case.material().c1().to_real(case.p());
+    let cot = case.cot_theta().clone();
+    let mt = case.matching()?;
+    let apex = case.apex()?;
+    let apex_ur = case.apex_u_r_over_speed_t()?;
+    let mut o = Map::new();
+    o.insert("solution".into(), Value::String(case.solution().name().into()));
+    o.insert("alpha".into(), real(&(case.p().clone() * &c1), digits));
+    o.insert("speed".into(), real(&(mt.v_hat.clone() * &c1 * &cot), digits));
+    o.insert("p".into(), real(case.p(), digits));
+    o.insert("m".into(), real(case.m(), digits));
+    o.insert("m_r".into(), real(case.m_r(), digits));
+    o.insert("omega0".into(), real(&case.omega0(), digits));
+    o.insert("s0".into(), real(&case.s0(), digits));
+    o.insert("regime".into(), Value::String(apex.regime.name().into()));
+    o.insert("apex_exponent".into(), real(&apex.exponent, digits));
+    o.insert("apex_amplitude_over_mu_cot_theta".into(), real(&apex.amplitude, digits));
+    o.insert("q_over_c1sq_cot_theta".into(), real(&mt.q_hat, digits));
+    o.insert("v_over_c1_cot_theta".into(), real(&mt.v_hat, digits));
+    o.insert("force_over_a_mu_cot_theta".into(), real(&case.force_hat()?, digits));
+    o.insert("edge_slip_velocity_over_speed".into(), real(&case.edge_slip_velocity_over_speed()?, digits));
+    o.insert("edge_following_rate_over_speed".into(), real(&case.edge_following_rate_over_speed()?, digits));
+    o.insert("apex_u_r_over_speed_t".into(), real(&apex_ur.value, digits));
+    let err = mt.rel_error;
+    if full {
+        add_admissibility(&mut o, case)?;
+    } else {
+        o.insert("slip_direction_ok".into(), Value::Null);
+        o.insert("contact_compressive".into(), Value::Bool(mt.q_hat > 0.0));
+        o.insert("no_interpenetration".into(), Value::Null);
+    }
+    o.insert("error_estimate".into(), f(err));
+    o.insert("digits".into(), Value::Number(digits.into()));
+    Ok(o)
+}
+
+/// Relative difference of two reports' numeric entries (the largest over `keys`).
+pub fn report_difference(a: &Map<String, Value>, b: &Map<String, Value>, keys: &[&str]) -> f64 {
+    let mut d = 0.0_f64;
+    for k in keys {
+        let (Some(Value::Number(x)), Some(Value::Number(y))) = (a.get(*k), b.get(*k)) else {
+            continue;
+        };
+        let (Ok(x), Ok(y)) = (Float::parse(x.to_string()), Float::parse(y.to_string())) else {
+            continue;
+        };
+        let x = Float::with_val(2048, x);
+        let y = Float::with_val(2048, y);
+        let diff = (x - &y).abs();
+        let scale = y.abs();
+        if scale > 0 {
+            d = d.max((diff / scale).to_f64());
+        }
+    }
+    d
+}
+
+/// Numeric keys of the solve report whose agreement across two precisions is checked.
+pub const CHECKED_KEYS: &[&str] = &[
+    "alpha",
+    "speed",
+    "omega0",
+    "s0",
+    "q_over_c1sq_cot_theta",
+    "v_over_c1_cot_theta",
+    "force_over_a_mu_cot_theta",
+    "edge_slip_velocity_over_speed",
+    "edge_following_rate_over_speed",
+];
+
+/// Solve a case and report it, at the requested precision. With `digits`, the case is solved
+/// at two precisions (bits(digits) + 32 and + 64) and the error estimate is the larger of the
+/// quadrature estimate and the difference between the two: never optimistic.
+pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
+    let digits = input.out_digits();
+    match input.precision()? {
+        Precision::F64 => {
+            let case = input.case(speed, &0.0_f64)?;
+            let mut r = solve_report(&case, digits, full)?;
+            add_inputs(&mut r, input);
+            Ok(r)
+        }
+        Precision::Bits(bits) => {
+            let hi = Float::with_val(bits + GUARD_BITS, 0);
+            let lo = Float::with_val(bits, 0);
+            let case_hi = input.case(speed, &hi)?;
+            let case_lo = input.case(speed, &lo)?;
+            let r_lo = solve_report(&case_lo, digits + 10, false)?;
+            let r_hi = solve_report(&case_hi, digits + 10, false)?;
+            let diff = report_difference(&r_lo, &r_hi, CHECKED_KEYS);
+            let err = diff.max(case_hi.matching()?.rel_error);
+            let mut out = round_report(r_hi, digits);
+            if full {
+                // The admissibility checks are sign checks: done on the f64 twin of the case.
+                let twin = input.case(Speed::Alpha(case_hi.p().to_f64() * input.material.c1().value()), &0.0_f64)?;
+                add_admissibility(&mut out, &twin)?;
+            }
+            out.insert("error_estimate".into(), f(err));
+            add_inputs(&mut out, input);
+            Ok(out)
+        }
+    }
+}
+
+fn add_admissibility<T: CachedRules>(r: &mut Map<String, Value>, case: &Case<T>) -> Result<()> {
+    let adm = case.admissibility()?;
+    r.insert("slip_direction_ok".into(), Value::Bool(adm.slip_direction_ok));
+    r.insert("contact_compressive".into(), Value::Bool(adm.contact_compressive));
+    r.insert("no_interpenetration".into(), Value::Bool(adm.no_interpenetration));
+    Ok(())
+}
+
+/// Round every arbitrary-precision number of a report to `digits` significant digits
+/// (booleans, strings and the integer `digits` entry are left as they are).
+pub fn round_report(r: Map<String, Value>, digits: usize) -> Map<String, Value> {
+    r.into_iter()
+        .map(|(k, v)| {
+            let v = match (&v, k.as_str()) {
+                (_, "digits") => Value::Number(digits.into()),
+                (Value::Number(n), _) => match Float::parse(n.to_string()) {
+                    Ok(x) => real(&Float::with_val(4096, x), digits),
+                    Err(_) => v,
+                },
+                _ => v,
+            };
+            (k, v)
+        })
+        .collect()
+}
+
+fn add_inputs(r: &mut Map<String, Value>, input: &CaseInput) {
+    r.insert("c1".into(), num(input.material.c1().text()));
+    r.insert("c2".into(), num(input.material.c2().text()));
+    r.insert("theta_deg".into(), num(input.indenter.theta_deg().text()));
+    r.insert("gamma".into(), num(input.indenter.gamma().text()));
+    r.insert(
+        "coupling".into(),
+        Value::String(
+            match input.indenter.coupling() {
+                Coupling::On => "on",
+                Coupling::Off => "off",
+            }
+            .into(),
+        ),
+    );
+}
+
+/// Contact stress sigma_theta/(mu cot Theta) at the given r/(alpha t), with its largest
+/// relative error estimate.
+pub fn stress_profile<T: CachedRules>(case: &Case<T>, at: &[f64], digits: usize) -> Result<(Vec<Value>, f64)> {
+    let mut out = Vec::with_capacity(at.len());
+    let mut err = 0.0_f64;
+    for &f in at {
+        if !(f > 0.0 && f <= 1.0) {
+            return Err(WedgeError::InvalidParameter {
+                name: "at",
+                value: format!("{f}"),
+                range: "(0, 1] (fractions r/(alpha t) of the contact half-width)".into(),
+            });
+        }
+        let x = case.p().clone() * f;
+        let s = case.stress_hat(&x)?;
+        err = err.max(s.error / s.value.to_f64().abs().max(1e-300));
+        out.push(real(&s.value, digits));
+    }
+    Ok((out, err))
+}
+
+/// Parse "a,b,c" into numbers; `name` goes into the error.
+pub fn parse_list(name: &'static str, s: &str) -> Result<Vec<f64>> {
+    s.split(',')
+        .map(|t| {
+            let v: f64 = t.trim().parse().map_err(|_| WedgeError::InvalidParameter {
+                name,
+                value: s.to_string(),
+                range: "comma-separated finite numbers".into(),
+            })?;
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(WedgeError::InvalidParameter {
+                    name,
+                    value: s.to_string(),
+                    range: "comma-separated finite numbers".into(),
+                })
+            }
+        })
+        .collect()
+}
+
+/// Parse a range "min,max,steps" (steps >= 2, min < max).
+pub fn parse_range(name: &'static str, s: &str) -> Result<(f64, f64, usize)> {
+    let v = parse_list(name, s)?;
+    let bad = || WedgeError::InvalidParameter {
+        name,
+        value: s.to_string(),
+        range: "min,max,steps with min < max and an integer steps >= 2".into(),
+    };
+    if v.len() != 3 || !(v[0] < v[1]) || v[2] < 2.0 || v[2].fract() != 0.0 || v[2] > 1e6 {
+        return Err(bad());
+    }
+    Ok((v[0], v[1], v[2] as usize))
+}
+
+/// Evenly spaced values of a range.
+pub fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect()
+}
