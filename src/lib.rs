@@ -5,6 +5,8 @@
 //! normalisation: `v_over_c1_cot_theta` is V/(c1 cot Theta), `force_over_a_mu_cot_theta` is
 //! P/(alpha t mu cot Theta), and so on.
 #![warn(missing_docs)]
+// `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use complexfn::quadrature::CachedRules;
 use complexfn::{Precision, Real};
@@ -55,8 +57,12 @@ impl CaseInput {
     /// Build the case at the precision of `like`.
     pub fn case<T: CachedRules>(&self, speed: Speed, like: &T) -> Result<Case<T>> {
         match speed {
-            Speed::Alpha(a) => Case::with_alpha(&self.material, &self.indenter, a, like, self.solution),
-            Speed::Indenter(v) => wedge::case_for_speed(&self.material, &self.indenter, v, like, self.solution),
+            Speed::Alpha(a) => {
+                Case::with_alpha(&self.material, &self.indenter, a, like, self.solution)
+            }
+            Speed::Indenter(v) => {
+                wedge::case_for_speed(&self.material, &self.indenter, v, like, self.solution)
+            }
         }
     }
 }
@@ -112,16 +118,26 @@ pub const SOLVE_KEYS: &[&str] = &[
 ];
 
 /// The `solve` report of a case: every quantity of [`SOLVE_KEYS`].
-pub fn solve_report<T: CachedRules>(case: &Case<T>, digits: usize, full: bool) -> Result<Map<String, Value>> {
+pub fn solve_report<T: CachedRules>(
+    case: &Case<T>,
+    digits: usize,
+    full: bool,
+) -> Result<Map<String, Value>> {
     let c1 = case.material().c1().to_real(case.p());
     let cot = case.cot_theta().clone();
     let mt = case.matching()?;
     let apex = case.apex()?;
     let apex_ur = case.apex_u_r_over_speed_t()?;
     let mut o = Map::new();
-    o.insert("solution".into(), Value::String(case.solution().name().into()));
+    o.insert(
+        "solution".into(),
+        Value::String(case.solution().name().into()),
+    );
     o.insert("alpha".into(), real(&(case.p().clone() * &c1), digits));
-    o.insert("speed".into(), real(&(mt.v_hat.clone() * &c1 * &cot), digits));
+    o.insert(
+        "speed".into(),
+        real(&(mt.v_hat.clone() * &c1 * &cot), digits),
+    );
     o.insert("p".into(), real(case.p(), digits));
     o.insert("m".into(), real(case.m(), digits));
     o.insert("m_r".into(), real(case.m_r(), digits));
@@ -129,12 +145,24 @@ pub fn solve_report<T: CachedRules>(case: &Case<T>, digits: usize, full: bool) -
     o.insert("s0".into(), real(&case.s0(), digits));
     o.insert("regime".into(), Value::String(apex.regime.name().into()));
     o.insert("apex_exponent".into(), real(&apex.exponent, digits));
-    o.insert("apex_amplitude_over_mu_cot_theta".into(), real(&apex.amplitude, digits));
+    o.insert(
+        "apex_amplitude_over_mu_cot_theta".into(),
+        real(&apex.amplitude, digits),
+    );
     o.insert("q_over_c1sq_cot_theta".into(), real(&mt.q_hat, digits));
     o.insert("v_over_c1_cot_theta".into(), real(&mt.v_hat, digits));
-    o.insert("force_over_a_mu_cot_theta".into(), real(&case.force_hat()?, digits));
-    o.insert("edge_slip_velocity_over_speed".into(), real(&case.edge_slip_velocity_over_speed()?, digits));
-    o.insert("edge_following_rate_over_speed".into(), real(&case.edge_following_rate_over_speed()?, digits));
+    o.insert(
+        "force_over_a_mu_cot_theta".into(),
+        real(&case.force_hat()?, digits),
+    );
+    o.insert(
+        "edge_slip_velocity_over_speed".into(),
+        real(&case.edge_slip_velocity_over_speed()?, digits),
+    );
+    o.insert(
+        "edge_following_rate_over_speed".into(),
+        real(&case.edge_following_rate_over_speed()?, digits),
+    );
     o.insert("apex_u_r_over_speed_t".into(), real(&apex_ur.value, digits));
     let err = mt.rel_error;
     if full {
@@ -207,7 +235,10 @@ pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, 
             let mut out = round_report(r_hi, digits);
             if full {
                 // The admissibility checks are sign checks: done on the f64 twin of the case.
-                let twin = input.case(Speed::Alpha(case_hi.p().to_f64() * input.material.c1().value()), &0.0_f64)?;
+                let twin = input.case(
+                    Speed::Alpha(case_hi.p().to_f64() * input.material.c1().value()),
+                    &0.0_f64,
+                )?;
                 add_admissibility(&mut out, &twin)?;
             }
             out.insert("error_estimate".into(), f(err));
@@ -219,9 +250,18 @@ pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, 
 
 fn add_admissibility<T: CachedRules>(r: &mut Map<String, Value>, case: &Case<T>) -> Result<()> {
     let adm = case.admissibility()?;
-    r.insert("slip_direction_ok".into(), Value::Bool(adm.slip_direction_ok));
-    r.insert("contact_compressive".into(), Value::Bool(adm.contact_compressive));
-    r.insert("no_interpenetration".into(), Value::Bool(adm.no_interpenetration));
+    r.insert(
+        "slip_direction_ok".into(),
+        Value::Bool(adm.slip_direction_ok),
+    );
+    r.insert(
+        "contact_compressive".into(),
+        Value::Bool(adm.contact_compressive),
+    );
+    r.insert(
+        "no_interpenetration".into(),
+        Value::Bool(adm.no_interpenetration),
+    );
     Ok(())
 }
 
@@ -262,7 +302,11 @@ fn add_inputs(r: &mut Map<String, Value>, input: &CaseInput) {
 
 /// Contact stress sigma_theta/(mu cot Theta) at the given r/(alpha t), with its largest
 /// relative error estimate.
-pub fn stress_profile<T: CachedRules>(case: &Case<T>, at: &[f64], digits: usize) -> Result<(Vec<Value>, f64)> {
+pub fn stress_profile<T: CachedRules>(
+    case: &Case<T>,
+    at: &[f64],
+    digits: usize,
+) -> Result<(Vec<Value>, f64)> {
     let mut out = Vec::with_capacity(at.len());
     let mut err = 0.0_f64;
     for &f in at {
@@ -319,5 +363,7 @@ pub fn parse_range(name: &'static str, s: &str) -> Result<(f64, f64, usize)> {
 
 /// Evenly spaced values of a range.
 pub fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect()
+    (0..n)
+        .map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64)
+        .collect()
 }

@@ -10,7 +10,10 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use complexfn::Precision;
-use dyncontact::{linspace, num, parse_list, parse_range, solve, solve_report, stress_profile, CaseInput, Speed, SOLVE_KEYS, VERSION};
+use dyncontact::{
+    linspace, num, parse_list, parse_range, solve, solve_report, stress_profile, CaseInput, Speed,
+    SOLVE_KEYS, VERSION,
+};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rug::Float;
@@ -77,7 +80,12 @@ enum Command {
 #[derive(Args, Debug, Clone)]
 struct CaseArgs {
     /// Dilatational wave speed c1 in m/s.
-    #[arg(long, default_value = "1870.83", conflicts_with = "poisson", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        default_value = "1870.83",
+        conflicts_with = "poisson",
+        allow_hyphen_values = true
+    )]
     c1: String,
     /// Shear wave speed c2 in m/s (must be below c1 sqrt(3)/2).
     #[arg(long, default_value = "1000", allow_hyphen_values = true)]
@@ -206,7 +214,11 @@ fn header_lines(input: &CaseInput) -> Vec<String> {
     ]
 }
 
-fn curve_row<T: complexfn::quadrature::CachedRules>(input: &CaseInput, alpha: f64, like: &T) -> Result<Map<String, Value>> {
+fn curve_row<T: complexfn::quadrature::CachedRules>(
+    input: &CaseInput,
+    alpha: f64,
+    like: &T,
+) -> Result<Map<String, Value>> {
     let case = input.case(Speed::Alpha(alpha), like)?;
     solve_report(&case, input.out_digits(), false)
 }
@@ -223,7 +235,12 @@ fn run(cli: Cli) -> Result<()> {
                 print_table(&r);
             }
         }
-        Command::Stress { case, speed, at, out } => {
+        Command::Stress {
+            case,
+            speed,
+            at,
+            out,
+        } => {
             let inp = input(&case, out.digits)?;
             let at = parse_list("at", &at)?;
             let digits = inp.out_digits();
@@ -239,7 +256,10 @@ fn run(cli: Cli) -> Result<()> {
             };
             let mut m = Map::new();
             m.insert("solution".into(), Value::String(inp.solution.name().into()));
-            m.insert("r_over_alpha_t".into(), Value::Array(at.iter().map(|x| num(&format!("{x}"))).collect()));
+            m.insert(
+                "r_over_alpha_t".into(),
+                Value::Array(at.iter().map(|x| num(&format!("{x}"))).collect()),
+            );
             m.insert("sigma_over_mu_cot_theta".into(), Value::Array(values));
             m.insert("error_estimate".into(), num(&format!("{err:e}")));
             m.insert("digits".into(), Value::Number(digits.into()));
@@ -248,7 +268,9 @@ fn run(cli: Cli) -> Result<()> {
             } else {
                 println!("solution: {}", inp.solution.name());
                 println!("{:>16}  sigma/(mu cot Theta)", "r/(alpha t)");
-                if let (Some(Value::Array(a)), Some(Value::Array(s))) = (m.get("r_over_alpha_t"), m.get("sigma_over_mu_cot_theta")) {
+                if let (Some(Value::Array(a)), Some(Value::Array(s))) =
+                    (m.get("r_over_alpha_t"), m.get("sigma_over_mu_cot_theta"))
+                {
                     for (x, y) in a.iter().zip(s) {
                         println!("{x:>16}  {y}");
                     }
@@ -267,7 +289,10 @@ fn run(cli: Cli) -> Result<()> {
             let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
             let alphas = linspace(lo, hi, n);
             let bar = ProgressBar::new(n as u64);
-            bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} alpha values").unwrap_or_else(|_| ProgressStyle::default_bar()));
+            bar.set_style(
+                ProgressStyle::with_template("{bar:40} {pos}/{len} alpha values")
+                    .unwrap_or_else(|_| ProgressStyle::default_bar()),
+            );
             let prec = inp.precision()?;
             let rows: Vec<Result<Map<String, Value>>> = alphas
                 .par_iter()

@@ -604,9 +604,9 @@ def merge(r40, r50):
 def main():
     t0 = time.time()
     tasks = []
-    for (name, th, g, cp, p) in CASES:
-        tasks.append((name, th, g, cp, p, 50, False))
+    for (name, th, g, cp, p) in CASES[::-1]:  # slowest cases first
         tasks.append((name, th, g, cp, p, 40, True))
+        tasks.append((name, th, g, cp, p, 50, False))
     results = {}
     with Pool(2) as pool:
         classical = pool.map_async(run_classical, ["0.05", "0.2", "0.45"])

@@ -10,6 +10,8 @@
 //! tangential-displacement effects", eqs (12)-(21). Every function is generic over
 //! [`scalar::Real`], implemented for `f64` and `rug::Float`.
 #![warn(missing_docs)]
+// `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod branch;
 pub mod cauchy;

@@ -226,11 +226,13 @@ pub fn default_max_level(prec: u32) -> usize {
     (f64::from(prec).log2().ceil() as usize + 3).max(7)
 }
 
+type LegendreCache<T> = Mutex<HashMap<(u32, usize), Arc<Vec<(T, T)>>>>;
+
 /// Per-backend cache of tanh-sinh rules keyed by precision.
 #[derive(Debug)]
 pub struct RuleStore<T> {
     rules: Mutex<HashMap<u32, Arc<TanhSinhRule<T>>>>,
-    legendre: Mutex<HashMap<(u32, usize), Arc<Vec<(T, T)>>>>,
+    legendre: LegendreCache<T>,
 }
 
 impl<T> Default for RuleStore<T> {

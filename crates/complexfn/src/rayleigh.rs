@@ -105,7 +105,7 @@ impl<T: Real> Rayleigh<T> {
         let one = self.m.one();
         let p1 = p_k(zeta, &one);
         let p2 = p_k(zeta, &self.m);
-        self.from_radicals(zeta.clone() * zeta, p1, p2)
+        self.with_radicals(zeta.clone() * zeta, p1, p2)
     }
 
     /// Boundary values f(xi +- i0) of p1, p2, K, L, R on the real axis.
@@ -114,7 +114,7 @@ impl<T: Real> Rayleigh<T> {
         let p1 = p_boundary(xi, &one, side);
         let p2 = p_boundary(xi, &self.m, side);
         let s = xi.clone().sqr();
-        self.from_radicals(Cx::real(s), p1, p2)
+        self.with_radicals(Cx::real(s), p1, p2)
     }
 
     /// The analytic continuation, in s = zeta^2, of the lower boundary values on (0, m):
@@ -127,7 +127,7 @@ impl<T: Real> Rayleigh<T> {
         let p2 = (-s.clone().scale(&self.inv_m2))
             .add_re(&one)
             .powf(&minus_half);
-        self.from_radicals(s.clone(), p1, p2)
+        self.with_radicals(s.clone(), p1, p2)
     }
 
     /// R(xi)/(xi - m_R) for real 0 <= xi < m, free of cancellation at the Rayleigh root.
@@ -149,7 +149,7 @@ impl<T: Real> Rayleigh<T> {
         -(x * (xi.clone() + &self.m_r) * quad) / den
     }
 
-    fn from_radicals(&self, s: Cx<T>, p1: Cx<T>, p2: Cx<T>) -> RayleighValues<T> {
+    fn with_radicals(&self, s: Cx<T>, p1: Cx<T>, p2: Cx<T>) -> RayleighValues<T> {
         let q = p1.clone() * &p2;
         let k = Cx::real(s.re.lit(2.0)) - s.clone().scale(&self.inv_m2);
         let w = q.clone().recip();
@@ -236,7 +236,7 @@ fn rayleigh_cubic_root<T: Real>(m2: &T) -> Result<T> {
         }
         let step = v / d;
         let mut nx = x.clone() - &step;
-        if !(nx > lo && nx < hi) || !nx.is_finite() {
+        if !(nx > lo && nx < hi && nx.is_finite()) {
             nx = (lo.clone() + &hi) / 2.0;
         }
         let dx = (nx.clone() - &x).abs();

@@ -55,7 +55,7 @@ impl Precision {
 
     /// Validate a precision in bits: 0 and 1 are refused (MPFR needs at least 2 bits).
     pub fn checked_bits(bits: u32) -> Result<Self> {
-        if bits < 2 || bits > 1 << 24 {
+        if !(2..=1 << 24).contains(&bits) {
             return Err(Error::InvalidParameter {
                 name: "precision_bits",
                 value: bits.to_string(),

@@ -48,6 +48,8 @@
 //! by the identities given in [`surface`]. The normalisation is confirmed by the closed-form
 //! case (s_theta = -(Q mu/(c1 alpha)) arccosh(alpha t/r) for F = -i Q zeta^2 (zeta^2 - p^2)^(-1/2)).
 #![warn(missing_docs)]
+// `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod error;
 pub mod field;

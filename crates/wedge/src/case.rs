@@ -100,7 +100,11 @@ impl<T: CachedRules> Case<T> {
     ) -> Result<Self> {
         let c_r = complexfn::Rayleigh::new(material.m(&0.0_f64))?.m_r() * material.c1().value();
         if !(alpha.is_finite() && alpha > 0.0 && alpha < c_r) {
-            return Err(invalid("alpha", format!("{alpha} m/s"), format!("(0, c_R) = (0, {c_r}) m/s")));
+            return Err(invalid(
+                "alpha",
+                format!("{alpha} m/s"),
+                format!("(0, c_R) = (0, {c_r}) m/s"),
+            ));
         }
         let a = crate::params::Param::from_f64(alpha).to_real(like);
         let p = a / material.c1().to_real(like);

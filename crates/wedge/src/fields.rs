@@ -42,7 +42,9 @@ impl<T: CachedRules> Potentials<T> for WedgePotentials<'_, T> {
     }
     fn f(&self, zeta: &Cx<T>) -> Cx<T> {
         // -i Q zeta H
-        (zeta.clone() * self.case.h(zeta)).mul_neg_i().scale(&self.q_hat)
+        (zeta.clone() * self.case.h(zeta))
+            .mul_neg_i()
+            .scale(&self.q_hat)
     }
     fn g(&self, zeta: &Cx<T>) -> Cx<T> {
         let f = self.f(zeta).scale(self.case.gamma());
@@ -51,5 +53,19 @@ impl<T: CachedRules> Potentials<T> for WedgePotentials<'_, T> {
         } else {
             f
         }
+    }
+    fn breakpoints(&self) -> Vec<T> {
+        vec![self.case.p().clone()]
+    }
+    /// On the real axis outside [-p, p], H is real, positive and even (the phases of the three
+    /// principal powers cancel for xi < -p), so F(xi) = -i Q xi H(|xi|) is odd and
+    /// G = sgn(xi) gamma F.
+    fn fg_real(&self, xi: &T) -> (Cx<T>, Cx<T>) {
+        let a = xi.clone().abs();
+        let h = self.case.h_over_v_outside(&a, &(a.clone() - self.case.p())) * &a;
+        let f = Cx::imag(-(self.q_hat.clone() * xi * h));
+        let g = f.clone().scale(self.case.gamma());
+        let g = if xi.is_sign_negative() { -g } else { g };
+        (f, g)
     }
 }

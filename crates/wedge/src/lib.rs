@@ -10,11 +10,13 @@
 //! quantities you need. Everything is dimensionless: speeds over c1, stresses over
 //! mu cot Theta, Q over c1^2 cot Theta.
 #![warn(missing_docs)]
+// `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod admissibility;
 pub mod case;
 pub mod error;
-// pub mod fields;
+pub mod fields;
 pub mod inverse;
 pub mod matching;
 pub mod omega;

@@ -90,6 +90,43 @@ impl<T: Real> OmegaFn<T> {
         num.atan2(&den) / xi.pi()
     }
 
+    /// omega(s) = Omega(sqrt s) - Omega0 for complex s near [0, m^2), free of cancellation as
+    /// s -> 0 (where omega = O(s)), so that omega(u)/u in S0 keeps full relative accuracy.
+    ///
+    /// With tan(pi Omega) = A = m^2 (beta+gamma) N/D, N = -L/s, D = |p2| - beta gamma |p1| and
+    /// A0 = m^2 (beta+gamma)/(1 - beta gamma), atan A - atan A0 = atan((A - A0)/(1 + A A0))
+    /// (A A0 >= 0), and A - A0 is formed from N - 1, |p1| - 1, |p2| - 1, each written with an
+    /// explicit factor s:
+    /// |p_k| - 1 = (s/m_k^2)/(r_k (1 + r_k)), r_k = sqrt(1 - s/m_k^2), and with w = r_1 r_2,
+    /// N - 1 = s [(1 + 1/m^2)(1 + 1/m^2 - s/m^2)/(1 + w) + 1 - 1/m^2 - s/m^2]/((1 + w) w).
+    pub fn omega_rel(&self, s: &Cx<T>) -> Cx<T> {
+        if self.is_zero() {
+            return Cx::real(s.re.zero());
+        }
+        let one = s.re.one();
+        let inv_m2 = self.ray.m2().clone().recip();
+        let sm = s.clone().scale(&inv_m2);
+        let r1 = (-s.clone()).add_re(&one).sqrt();
+        let r2 = (-sm.clone()).add_re(&one).sqrt();
+        let d1 = s.clone() / (r1.clone() * r1.clone().add_re(&one));
+        let d2 = sm.clone() / (r2.clone() * r2.clone().add_re(&one));
+        let w = r1 * &r2;
+        let w1 = w.clone().add_re(&one);
+        let a = (-sm.clone()).add_re(&(one.clone() + &inv_m2));
+        let bracket =
+            (a.scale(&(one.clone() + &inv_m2)) / &w1).add_re(&(one.clone() - &inv_m2)) - sm;
+        let n1 = s.clone() * bracket / (w1 * &w);
+        let bg = &self.beta_gamma;
+        let one_bg = one.clone() - bg;
+        let num = n1.clone().scale(&one_bg) - d2.clone() + d1.clone().scale(bg);
+        let n = n1.add_re(&one);
+        let d = d2.add_re(&one) - d1.add_re(&one).scale(bg);
+        let k = self.ray.m2().clone() * &self.beta_plus_gamma;
+        let den = d.scale(&one_bg) + n.scale(&(k.clone() * &k));
+        let arg = num.scale(&k) / &den;
+        arg.atan().scale(&s.re.pi().recip())
+    }
+
     /// Omega continued analytically to complex s = zeta^2 (agrees with [`Self::omega`] for
     /// real 0 <= s < m^2).
     pub fn omega_continued(&self, s: &Cx<T>) -> Cx<T> {
@@ -168,7 +205,7 @@ impl<T: CachedRules> InnerRule<T> {
             .iter()
             .map(|(x, w)| {
                 let u = half.clone() * (x.clone() + 1.0);
-                let om = omega.omega(&u.clone().sqrt()) - omega.omega0();
+                let om = omega.omega_rel(&Cx::real(u.clone())).re;
                 (u, w.clone() * &half, om)
             })
             .collect();
@@ -248,7 +285,7 @@ impl<T: Real> InnerRule<T> {
         let m2 = omega.rayleigh().m2().clone();
         let limit = (m2 * 2.0 / &self.p2 - 1.01).min(s.re.lit(1.25));
         if a < limit {
-            let om_s = omega.omega_continued(&s).add_re(&(-omega.omega0().clone()));
+            let om_s = omega.omega_rel(&s);
             let mut acc = Cx::real(s.re.zero());
             for (u, w, om) in &self.nodes {
                 let num = (-om_s.clone()).add_re(om).scale(w);
@@ -265,5 +302,43 @@ impl<T: Real> InnerRule<T> {
             }
             acc
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rug::Float;
+
+    fn omega_fn<T: Real>(like: &T, beta: f64, gamma: f64) -> OmegaFn<T> {
+        let m = like.lit(1000.0) / like.lit(1870.83);
+        let ray = Rayleigh::new(m).unwrap();
+        let (b, g) = (like.lit(beta), like.lit(gamma));
+        OmegaFn::new(ray, b.clone() + &g, b * g)
+    }
+
+    #[test]
+    fn omega_rel_is_omega_minus_omega0_without_cancellation() {
+        // against Omega - Omega0 at 256 bits (where the cancellation costs nothing visible)
+        let big = omega_fn(&Float::with_val(256, 0), -0.0175, 0.6);
+        let small = omega_fn(&0.0_f64, -0.0175, 0.6);
+        for u in [1e-12, 1e-6, 0.01, 0.2, 0.27] {
+            let ub = Float::with_val(256, u);
+            let exact = big.omega(&ub.clone().sqrt()) - big.omega0();
+            let got = small.omega_rel(&Cx::real(u)).re;
+            let rel = ((got - exact.to_f64()) / exact.to_f64()).abs();
+            assert!(rel < 1e-14, "u {u}: {got} {exact}");
+            let gb = big.omega_rel(&Cx::real(ub)).re;
+            assert!(crate::omega::tests::rd(&gb, &exact) < 1e-60);
+        }
+        // continuation: complex s agrees with Omega_continued - Omega0
+        let s = Cx::new(0.05, 0.02);
+        let a = small.omega_rel(&s);
+        let b = small.omega_continued(&s).add_re(&-small.omega0());
+        assert!((a - b).abs() < 1e-15);
+    }
+
+    fn rd(a: &Float, b: &Float) -> f64 {
+        complexfn::scalar::rel_diff(a, b)
     }
 }
