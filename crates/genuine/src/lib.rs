@@ -1,0 +1,2 @@
+//! The genuine frictional wedge-indentation solution (no apex dislocation).
+#![warn(missing_docs)]
