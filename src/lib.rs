@@ -304,12 +304,13 @@ fn add_inputs(r: &mut Map<String, Value>, input: &CaseInput) {
 /// relative error estimate.
 pub fn stress_profile<T: CachedRules>(
     case: &Case<T>,
-    at: &[f64],
+    at: &[wedge::Param],
     digits: usize,
 ) -> Result<(Vec<Value>, f64)> {
     let mut out = Vec::with_capacity(at.len());
     let mut err = 0.0_f64;
-    for &f in at {
+    for fp in at {
+        let f = fp.value();
         if !(f > 0.0 && f <= 1.0) {
             return Err(WedgeError::InvalidParameter {
                 name: "at",
@@ -317,12 +318,87 @@ pub fn stress_profile<T: CachedRules>(
                 range: "(0, 1] (fractions r/(alpha t) of the contact half-width)".into(),
             });
         }
-        let x = case.p().clone() * f;
+        let x = case.p().clone() * fp.to_real(case.p());
+        let x = if x > *case.p() { case.p().clone() } else { x };
         let s = case.stress_hat(&x)?;
         err = err.max(s.error / s.value.to_f64().abs().max(1e-300));
         out.push(real(&s.value, digits));
     }
     Ok((out, err))
+}
+
+/// Parse points "x:y,x:y" (x/(c1 t), y/(c1 t)) into pairs; `name` goes into the error.
+pub fn parse_points(name: &'static str, s: &str) -> Result<Vec<(wedge::Param, wedge::Param)>> {
+    let bad = || WedgeError::InvalidParameter {
+        name,
+        value: s.to_string(),
+        range: "comma-separated x:y pairs (x/(c1 t), y/(c1 t)) with y < 0 and x^2 + y^2 < 1".into(),
+    };
+    s.split(',')
+        .map(|t| {
+            let (a, b) = t.split_once(':').ok_or_else(bad)?;
+            let x = wedge::Param::parse(name, a).map_err(|_| bad())?;
+            let y = wedge::Param::parse(name, b).map_err(|_| bad())?;
+            if !(y.value() < 0.0) {
+                return Err(bad());
+            }
+            Ok((x, y))
+        })
+        .collect()
+}
+
+/// Keys of the `field` report, in order (arrays over the points).
+pub const FIELD_KEYS: &[&str] = &[
+    "x_over_c1_t",
+    "y_over_c1_t",
+    "sigma_xx_over_mu_cot_theta",
+    "sigma_yy_over_mu_cot_theta",
+    "sigma_xy_over_mu_cot_theta",
+    "v_x_over_c1_cot_theta",
+    "v_y_over_c1_cot_theta",
+    "u_x_over_c1_t_cot_theta",
+    "u_y_over_c1_t_cot_theta",
+];
+
+/// The field inside the half-plane at points (x/(c1 t), y/(c1 t)), y < 0, from the
+/// homogeneous-function crate (eqs (10)-(12) with (16)); Cartesian components, y out of the
+/// body. Points ahead of the P front (x^2 + y^2 >= 1) are at rest and give zeros.
+pub fn field_report<T: CachedRules>(
+    case: &Case<T>,
+    pts: &[(wedge::Param, wedge::Param)],
+    digits: usize,
+) -> Result<Map<String, Value>> {
+    let pot = case.potentials()?;
+    let mut cols: Vec<Vec<Value>> = vec![Vec::new(); FIELD_KEYS.len()];
+    for (x, y) in pts {
+        let (xt, yt) = (x.to_real(case.p()), y.to_real(case.p()));
+        let fv =
+            homogeneous::field::at(&pot, &xt, &yt).map_err(|e| WedgeError::InvalidParameter {
+                name: "at",
+                value: format!("{}:{}", x.text(), y.text()),
+                range: format!("a point of the half-plane y < 0 ({e})"),
+            })?;
+        let c = fv.cartesian();
+        let vals = [xt, yt, c.sxx, c.syy, c.sxy, c.vx, c.vy, c.ux, c.uy];
+        for (col, v) in cols.iter_mut().zip(vals.iter()) {
+            col.push(real(v, digits));
+        }
+    }
+    let mut o = Map::new();
+    o.insert(
+        "solution".into(),
+        Value::String(case.solution().name().into()),
+    );
+    for (k, col) in FIELD_KEYS.iter().zip(cols) {
+        o.insert((*k).into(), Value::Array(col));
+    }
+    o.insert("digits".into(), Value::Number(digits.into()));
+    Ok(o)
+}
+
+/// Parse "a,b,c" into decimal parameters (kept as text for arbitrary precision).
+pub fn parse_params(name: &'static str, s: &str) -> Result<Vec<wedge::Param>> {
+    s.split(',').map(|t| wedge::Param::parse(name, t)).collect()
 }
 
 /// Parse "a,b,c" into numbers; `name` goes into the error.

@@ -11,8 +11,8 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use complexfn::Precision;
 use dyncontact::{
-    linspace, num, parse_list, parse_range, solve, solve_report, stress_profile, CaseInput, Speed,
-    SOLVE_KEYS, VERSION,
+    field_report, linspace, num, parse_params, parse_points, parse_range, solve, solve_report,
+    stress_profile, CaseInput, Speed, FIELD_KEYS, SOLVE_KEYS, VERSION,
 };
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -54,6 +54,19 @@ enum Command {
         speed: SpeedArgs,
         /// Comma-separated fractions r/(alpha t) in (0, 1].
         #[arg(long)]
+        at: String,
+        #[command(flatten)]
+        out: OutArgs,
+    },
+    /// The field inside the half-plane (stresses, particle velocities, displacements, Cartesian,
+    /// y out of the body) at points x/(c1 t):y/(c1 t) with y < 0.
+    Field {
+        #[command(flatten)]
+        case: CaseArgs,
+        #[command(flatten)]
+        speed: SpeedArgs,
+        /// Comma-separated points x:y in units of c1 t, y < 0 (e.g. 0.1:-0.1,0.6:-0.5).
+        #[arg(long, allow_hyphen_values = true)]
         at: String,
         #[command(flatten)]
         out: OutArgs,
@@ -242,7 +255,7 @@ fn run(cli: Cli) -> Result<()> {
             out,
         } => {
             let inp = input(&case, out.digits)?;
-            let at = parse_list("at", &at)?;
+            let at = parse_params("at", &at)?;
             let digits = inp.out_digits();
             let (values, err) = match inp.precision()? {
                 Precision::F64 => {
@@ -258,7 +271,7 @@ fn run(cli: Cli) -> Result<()> {
             m.insert("solution".into(), Value::String(inp.solution.name().into()));
             m.insert(
                 "r_over_alpha_t".into(),
-                Value::Array(at.iter().map(|x| num(&format!("{x}"))).collect()),
+                Value::Array(at.iter().map(|x| num(x.text())).collect()),
             );
             m.insert("sigma_over_mu_cot_theta".into(), Value::Array(values));
             m.insert("error_estimate".into(), num(&format!("{err:e}")));
@@ -276,6 +289,44 @@ fn run(cli: Cli) -> Result<()> {
                     }
                 }
                 println!("relative error estimate: {err:.1e}");
+            }
+        }
+        Command::Field {
+            case,
+            speed,
+            at,
+            out,
+        } => {
+            let inp = input(&case, out.digits)?;
+            let pts = parse_points("at", &at)?;
+            let digits = inp.out_digits();
+            let m = match inp.precision()? {
+                Precision::F64 => {
+                    field_report(&inp.case(speed_of(&speed), &0.0_f64)?, &pts, digits)?
+                }
+                Precision::Bits(b) => field_report(
+                    &inp.case(speed_of(&speed), &Float::with_val(b, 0))?,
+                    &pts,
+                    digits,
+                )?,
+            };
+            if out.json {
+                println!("{}", Value::Object(m));
+            } else {
+                println!("solution: {}", inp.solution.name());
+                println!("{}", FIELD_KEYS.join("  "));
+                for i in 0..pts.len() {
+                    let row: Vec<String> = FIELD_KEYS
+                        .iter()
+                        .map(|k| {
+                            m.get(*k)
+                                .and_then(|a| a.get(i))
+                                .map(|v| v.to_string())
+                                .unwrap_or_default()
+                        })
+                        .collect();
+                    println!("{}", row.join("  "));
+                }
             }
         }
         Command::Curve {
