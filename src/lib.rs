@@ -8,6 +8,9 @@
 // `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod accuracy;
+pub mod stability;
+
 use complexfn::quadrature::CachedRules;
 use complexfn::{Precision, Real};
 use rug::Float;
@@ -211,10 +214,126 @@ pub const CHECKED_KEYS: &[&str] = &[
     "edge_following_rate_over_speed",
 ];
 
+fn solver_err(e: genuine::GenuineError) -> WedgeError {
+    match e {
+        genuine::GenuineError::Wedge(w) => w,
+        other => WedgeError::Solver(other.to_string()),
+    }
+}
+
+/// The genuine solution (f64 only) for a contact speed.
+pub fn genuine_case(input: &CaseInput, speed: Speed) -> Result<genuine::GenuineCase> {
+    if input.digits.is_some() {
+        return Err(WedgeError::Unsupported(
+            "the genuine solution is computed in f64 only: omit --digits (or use --solution paper)"
+                .into(),
+        ));
+    }
+    let c1 = input.material.c1().value();
+    let m_r = complexfn::Rayleigh::new(input.material.m(&0.0_f64))?
+        .m_r()
+        .to_owned();
+    let opts = genuine::SolveOptions::default();
+    match speed {
+        Speed::Alpha(a) => {
+            if !(a.is_finite() && a > 0.0 && a < m_r * c1) {
+                return Err(WedgeError::InvalidParameter {
+                    name: "alpha",
+                    value: format!("{a} m/s"),
+                    range: format!("(0, c_R) = (0, {}) m/s", m_r * c1),
+                });
+            }
+            genuine::GenuineCase::solve(&input.material, &input.indenter, a / c1, opts)
+                .map_err(solver_err)
+        }
+        Speed::Indenter(v) => {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(WedgeError::InvalidParameter {
+                    name: "speed",
+                    value: format!("{v} m/s"),
+                    range: "(0, inf) m/s".into(),
+                });
+            }
+            let v_hat = v / (c1 * input.indenter.cot_theta(&0.0_f64));
+            genuine::GenuineCase::for_speed(
+                &input.material,
+                &input.indenter,
+                v_hat,
+                m_r * 1e-6,
+                m_r * (1.0 - 1e-6),
+                opts,
+            )
+            .map_err(solver_err)
+        }
+    }
+}
+
+/// The `solve` report of the genuine solution (keys of [`SOLVE_KEYS`]; quantities that belong
+/// to the paper's construction only, such as Omega0, Q and the apex dislocation, are null).
+pub fn genuine_report(
+    input: &CaseInput,
+    g: &genuine::GenuineCase,
+    full: bool,
+) -> Result<Map<String, Value>> {
+    let c1 = input.material.c1().value();
+    let cot = input.indenter.cot_theta(&0.0_f64);
+    let ray = complexfn::Rayleigh::new(input.material.m(&0.0_f64))?;
+    let (apex, amp) = g.apex();
+    let mut o = Map::new();
+    for k in SOLVE_KEYS {
+        o.insert((*k).into(), Value::Null);
+    }
+    o.insert(
+        "solution".into(),
+        Value::String(Solution::Genuine.name().into()),
+    );
+    o.insert("alpha".into(), f(g.p() * c1));
+    o.insert("speed".into(), f(g.v_hat() * c1 * cot));
+    o.insert("p".into(), f(g.p()));
+    o.insert("m".into(), f(*ray.m()));
+    o.insert("m_r".into(), f(*ray.m_r()));
+    let regime = match apex.kind {
+        genuine::ApexKind::Finite => "finite",
+        genuine::ApexKind::Logarithmic => "logarithmic",
+        genuine::ApexKind::Power => "power",
+    };
+    o.insert("regime".into(), Value::String(regime.into()));
+    let lambda = if apex.kind == genuine::ApexKind::Power {
+        apex.lambdas[0]
+    } else {
+        0.0
+    };
+    o.insert("apex_exponent".into(), f(lambda));
+    o.insert("apex_amplitude_over_mu_cot_theta".into(), f(amp));
+    o.insert("v_over_c1_cot_theta".into(), f(g.v_hat()));
+    o.insert("force_over_a_mu_cot_theta".into(), f(g.force_hat()));
+    if full {
+        o.insert(
+            "slip_direction_ok".into(),
+            Value::Bool(g.slip_direction_ok().map_err(solver_err)?),
+        );
+        o.insert(
+            "contact_compressive".into(),
+            Value::Bool(g.contact_compressive().map_err(solver_err)?),
+        );
+    }
+    o.insert(
+        "error_estimate".into(),
+        f(g.error_estimate() / g.v_hat().abs()),
+    );
+    o.insert("digits".into(), Value::Number(16.into()));
+    add_inputs(&mut o, input);
+    Ok(o)
+}
+
 /// Solve a case and report it, at the requested precision. With `digits`, the case is solved
 /// at two precisions (bits(digits) + 32 and + 64) and the error estimate is the larger of the
 /// quadrature estimate and the difference between the two: never optimistic.
 pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
+    if input.solution == Solution::Genuine {
+        let g = genuine_case(input, speed)?;
+        return genuine_report(input, &g, full);
+    }
     let digits = input.out_digits();
     match input.precision()? {
         Precision::F64 => {
@@ -325,6 +444,58 @@ pub fn stress_profile<T: CachedRules>(
         out.push(real(&s.value, digits));
     }
     Ok((out, err))
+}
+
+/// Contact stress of the case at fractions r/(alpha t), in any solution variant, with its
+/// largest relative error estimate.
+pub fn stress_values(
+    input: &CaseInput,
+    speed: Speed,
+    at: &[wedge::Param],
+) -> Result<(Vec<Value>, f64)> {
+    let digits = input.out_digits();
+    if input.solution == Solution::Genuine {
+        let g = genuine_case(input, speed)?;
+        let mut out = Vec::new();
+        for fp in at {
+            let fr = fp.value();
+            if !(fr > 0.0 && fr <= 1.0) {
+                return Err(WedgeError::InvalidParameter {
+                    name: "at",
+                    value: fp.text().to_string(),
+                    range: "(0, 1] (fractions r/(alpha t) of the contact half-width)".into(),
+                });
+            }
+            out.push(f(g.stress_hat(fr * g.p()).map_err(solver_err)?));
+        }
+        return Ok((out, g.error_estimate() / g.v_hat().abs()));
+    }
+    match input.precision()? {
+        Precision::F64 => stress_profile(&input.case(speed, &0.0_f64)?, at, digits),
+        Precision::Bits(b) => {
+            stress_profile(&input.case(speed, &Float::with_val(b, 0))?, at, digits)
+        }
+    }
+}
+
+/// One row of an alpha-V curve (the `solve` keys without the admissibility sweep).
+pub fn curve_row(input: &CaseInput, alpha: f64) -> Result<Map<String, Value>> {
+    if input.solution == Solution::Genuine {
+        let g = genuine_case(input, Speed::Alpha(alpha))?;
+        return genuine_report(input, &g, false);
+    }
+    match input.precision()? {
+        Precision::F64 => solve_report(
+            &input.case(Speed::Alpha(alpha), &0.0_f64)?,
+            input.out_digits(),
+            false,
+        ),
+        Precision::Bits(b) => solve_report(
+            &input.case(Speed::Alpha(alpha), &Float::with_val(b, 0))?,
+            input.out_digits(),
+            false,
+        ),
+    }
 }
 
 /// Parse points "x:y,x:y" (x/(c1 t), y/(c1 t)) into pairs; `name` goes into the error.

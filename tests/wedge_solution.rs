@@ -255,6 +255,12 @@ fn apex_asymptotics_power_finite_and_logarithmic() {
     let ds = cs.stress_hat(&x1).unwrap().value - cs.stress_hat(&x2).unwrap().value;
     let dl = cs.apex_leading_term(&x1).unwrap() - cs.apex_leading_term(&x2).unwrap();
     assert!((ds / dl - 1.0).abs() < 1e-6, "{}", ds / dl);
+    // the two-term expansion C + A (p/x)^(2 Omega0) itself
+    for x in [0.3e-7, 0.3e-11] {
+        let s = cs.stress_hat(&x).unwrap().value;
+        let lead = cs.apex_leading_term(&x).unwrap();
+        assert!((s - lead).abs() < 1e-4 * s.abs(), "x {x}: {s} {lead}");
+    }
     // finite: sigma(x) - sigma(0) ~ Q c0 x^(-2 Omega0)/(-2 Omega0)
     let cs = case(86.0, 0.001, Coupling::On, 0.3, Solution::Paper);
     let apex = cs.apex().unwrap();

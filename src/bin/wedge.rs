@@ -11,8 +11,8 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use complexfn::Precision;
 use dyncontact::{
-    field_report, linspace, num, parse_params, parse_points, parse_range, solve, solve_report,
-    stress_profile, CaseInput, Speed, FIELD_KEYS, SOLVE_KEYS, VERSION,
+    field_report, linspace, num, parse_params, parse_points, parse_range, solve, CaseInput, Speed,
+    FIELD_KEYS, SOLVE_KEYS, VERSION,
 };
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -115,7 +115,8 @@ struct CaseArgs {
     /// Displacement coupling: on (beta = -cot Theta) or off (beta = 0).
     #[arg(long, value_enum, default_value_t = CouplingArg::On)]
     coupling: CouplingArg,
-    /// Solution variant.
+    /// Solution variant: paper (the paper's construction, consistent matching), as-printed
+    /// (the printed matching), or genuine (no apex dislocation; f64 only).
     #[arg(long, default_value = "paper")]
     solution: String,
 }
@@ -227,15 +228,6 @@ fn header_lines(input: &CaseInput) -> Vec<String> {
     ]
 }
 
-fn curve_row<T: complexfn::quadrature::CachedRules>(
-    input: &CaseInput,
-    alpha: f64,
-    like: &T,
-) -> Result<Map<String, Value>> {
-    let case = input.case(Speed::Alpha(alpha), like)?;
-    solve_report(&case, input.out_digits(), false)
-}
-
 fn run(cli: Cli) -> Result<()> {
     let stdout = std::io::stdout();
     match cli.command {
@@ -257,16 +249,7 @@ fn run(cli: Cli) -> Result<()> {
             let inp = input(&case, out.digits)?;
             let at = parse_params("at", &at)?;
             let digits = inp.out_digits();
-            let (values, err) = match inp.precision()? {
-                Precision::F64 => {
-                    let c = inp.case(speed_of(&speed), &0.0_f64)?;
-                    stress_profile(&c, &at, digits)?
-                }
-                Precision::Bits(b) => {
-                    let c = inp.case(speed_of(&speed), &Float::with_val(b, 0))?;
-                    stress_profile(&c, &at, digits)?
-                }
-            };
+            let (values, err) = dyncontact::stress_values(&inp, speed_of(&speed), &at)?;
             let mut m = Map::new();
             m.insert("solution".into(), Value::String(inp.solution.name().into()));
             m.insert(
@@ -344,14 +327,10 @@ fn run(cli: Cli) -> Result<()> {
                 ProgressStyle::with_template("{bar:40} {pos}/{len} alpha values")
                     .unwrap_or_else(|_| ProgressStyle::default_bar()),
             );
-            let prec = inp.precision()?;
             let rows: Vec<Result<Map<String, Value>>> = alphas
                 .par_iter()
                 .map(|&a| {
-                    let r = match prec {
-                        Precision::F64 => curve_row(&inp, a, &0.0_f64),
-                        Precision::Bits(b) => curve_row(&inp, a, &Float::with_val(b, 0)),
-                    };
+                    let r = dyncontact::curve_row(&inp, a);
                     bar.inc(1);
                     r
                 })

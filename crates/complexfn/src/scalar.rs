@@ -111,6 +111,8 @@ pub trait Real:
     fn from_f64_prec(x: f64, bits: u32) -> Self;
     /// Parse a decimal string at `bits` bits (for reference values with more digits than f64).
     fn parse_prec(s: &str, bits: u32) -> Result<Self>;
+    /// An MPFR value rounded to `bits` bits (to the nearest double for `f64`).
+    fn from_mpfr(x: &Float, bits: u32) -> Self;
     /// Mantissa length of this value in bits.
     fn prec(&self) -> u32;
     /// Nearest `f64`.
@@ -233,6 +235,9 @@ impl Real for f64 {
             .parse::<f64>()
             .map_err(|_| Error::Parse(s.to_string()))
     }
+    fn from_mpfr(x: &Float, _bits: u32) -> Self {
+        x.to_f64()
+    }
     #[inline]
     fn prec(&self) -> u32 {
         53
@@ -347,6 +352,9 @@ impl Real for Float {
         Float::parse(s.trim())
             .map(|p| Float::with_val(bits, p))
             .map_err(|_| Error::Parse(s.to_string()))
+    }
+    fn from_mpfr(x: &Float, bits: u32) -> Self {
+        Float::with_val(bits, x)
     }
     #[inline]
     fn prec(&self) -> u32 {

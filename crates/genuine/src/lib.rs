@@ -1,2 +1,20 @@
 //! The genuine frictional wedge-indentation solution (no apex dislocation).
+//!
+//! * [`kernels`]: Lamb's self-similar surface response and its contour representation;
+//! * [`apex`]: the Mellin eigen-equation at the apex and its exponents;
+//! * [`basis`]: the spectral basis carrying the edge and apex exponents;
+//! * [`solver`]: the singular integral equation, its collocation solve and the solved case
+//!   [`GenuineCase`].
 #![warn(missing_docs)]
+
+pub mod apex;
+pub mod basis;
+pub mod error;
+pub mod kernels;
+pub mod quad;
+pub mod solver;
+
+pub use apex::{ApexExponents, ApexKind};
+pub use error::{GenuineError, Result};
+pub use kernels::Lamb;
+pub use solver::{load_through_kernels, GenuineCase, SolveOptions};

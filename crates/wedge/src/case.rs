@@ -18,6 +18,19 @@ use crate::error::{invalid, Result, WedgeError};
 use crate::omega::{InnerRule, OmegaFn};
 use crate::params::{Coupling, Indenter, Material, Solution};
 
+/// X(v), Omega(v) and cos, sin of pi Omega(v) on the contact (see [`Case::x_on_contact`]).
+#[derive(Clone, Debug)]
+pub struct ContactFactors<T> {
+    /// X = v^(1 - 2 Omega) (p^2 - v^2)^(-1/2 + Omega) e^(b(v)).
+    pub x: T,
+    /// Omega(v).
+    pub omega: T,
+    /// cos(pi Omega(v)).
+    pub cos: T,
+    /// sin(pi Omega(v)).
+    pub sin: T,
+}
+
 /// The indentation problem for one contact speed, at the precision of `T`.
 #[derive(Debug)]
 pub struct Case<T> {
@@ -31,6 +44,8 @@ pub struct Case<T> {
     pub(crate) omega: OmegaFn<T>,
     pub(crate) inner: InnerRule<T>,
     pub(crate) on_boundary: bool,
+    /// -1/2 + Omega(p): the exponent of the edge singularity of H (declared to the quadrature).
+    pub(crate) edge_exponent: f64,
     pub(crate) matching: OnceLock<std::result::Result<crate::matching::Matching<T>, WedgeError>>,
 }
 
@@ -75,6 +90,7 @@ impl<T: CachedRules> Case<T> {
         let bg = beta.clone() * &gamma;
         let omega = OmegaFn::new(ray, bpg, bg);
         let inner = InnerRule::new(&omega, &p)?;
+        let edge_exponent = omega.omega(&p).to_f64() - 0.5;
         Ok(Case {
             material: material.clone(),
             indenter: indenter.clone(),
@@ -86,6 +102,7 @@ impl<T: CachedRules> Case<T> {
             omega,
             inner,
             on_boundary,
+            edge_exponent,
             matching: OnceLock::new(),
         })
     }
@@ -157,6 +174,10 @@ impl<T: Real> Case<T> {
     pub fn inner(&self) -> &InnerRule<T> {
         &self.inner
     }
+    /// The exponent -1/2 + Omega(p) of (v^2 - p^2) in H at the contact edge.
+    pub fn edge_exponent(&self) -> f64 {
+        self.edge_exponent
+    }
     /// Whether gamma = cot Theta was detected (coupled case), where Omega = 0 identically.
     pub fn on_regime_boundary(&self) -> bool {
         self.on_boundary
@@ -223,8 +244,8 @@ impl<T: Real> Case<T> {
     /// X(v) = v^(1 - 2 Omega) (p^2 - v^2)^(-1/2 + Omega) e^(b(v)) on the contact 0 < v < p, the
     /// modulus of H^{+-}(v) (corrected eq (32): H^{+-} = -+ i X e^(+- i pi Omega)), together with
     /// Omega(v). `p_minus_v` is p - v to full relative accuracy.
-    pub fn x_on_contact(&self, v: &T, p_minus_v: &T) -> (T, T) {
-        let om = self.omega.omega(v);
+    pub fn x_on_contact(&self, v: &T, p_minus_v: &T) -> ContactFactors<T> {
+        let (om, cos, sin) = self.omega.omega_cos_sin(v);
         let s = v.clone().sqr();
         let om_rel = om.clone() - self.omega.omega0();
         let b = self.inner.b_with(&s, &om_rel);
@@ -232,7 +253,12 @@ impl<T: Real> Case<T> {
         let one = om.one();
         let x =
             (v.clone().ln() * (one - om.clone() * 2.0) + pv.ln() * (om.clone() - 0.5) + b).exp();
-        (x, om)
+        ContactFactors {
+            x,
+            omega: om,
+            cos,
+            sin,
+        }
     }
 
     /// The material's Rayleigh family.

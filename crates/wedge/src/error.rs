@@ -29,6 +29,9 @@ pub enum WedgeError {
     /// The requested solution variant or quantity is not available for this case.
     #[error("{0}")]
     Unsupported(String),
+    /// An error reported by a companion solver (e.g. the genuine solution's), as its message.
+    #[error("{0}")]
+    Solver(String),
     /// An error of the complex-function layer.
     #[error(transparent)]
     Complex(#[from] complexfn::Error),

@@ -80,14 +80,43 @@ impl<T: Real> OmegaFn<T> {
 
     /// Omega(xi) for real 0 <= xi < m, eq (31).
     pub fn omega(&self, xi: &T) -> T {
+        self.omega_cos_sin(xi).0
+    }
+
+    /// (Omega(xi), cos(pi Omega), sin(pi Omega)) for real 0 <= xi < m. The cosine and sine
+    /// are formed from tan(pi Omega) = num/den directly (den/hypot, num/hypot), so cos(pi Omega)
+    /// keeps full relative accuracy when Omega is close to 1/2 (large friction).
+    pub fn omega_cos_sin(&self, xi: &T) -> (T, T, T) {
         if self.is_zero() {
-            return xi.zero();
+            return (xi.zero(), xi.one(), xi.zero());
         }
         let v = self.ray.at_boundary(xi, Side::Lower);
         let (p1, p2, l_s) = (v.p1.re, v.p2.re, v.l_over_s.re);
         let num = -(self.ray.m2().clone() * &self.beta_plus_gamma * l_s);
         let den = p2 - self.beta_gamma.clone() * p1;
-        num.atan2(&den) / xi.pi()
+        let h = num.clone().hypot(&den);
+        let om = num.clone().atan2(&den) / xi.pi();
+        (om, den / &h, num / h)
+    }
+
+    /// 1 - 2 Omega0 with full relative accuracy as Omega0 -> 1/2 (strong friction):
+    /// (2/pi) atan((1 - beta gamma)/(m^2 (beta + gamma))) for beta + gamma > 0.
+    pub fn one_minus_two_omega0(&self) -> T {
+        let num = self.ray.m2().clone() * &self.beta_plus_gamma;
+        let den = self.beta_gamma.one() - &self.beta_gamma;
+        if num > 0.0 {
+            (den / num).atan() * 2.0 / self.beta_gamma.pi()
+        } else {
+            self.beta_gamma.one() - self.omega0.clone() * 2.0
+        }
+    }
+
+    /// (cos(pi Omega0), sin(pi Omega0)) from tan(pi Omega0) = m^2 (beta + gamma)/(1 - beta gamma).
+    pub fn omega0_cos_sin(&self) -> (T, T) {
+        let num = self.ray.m2().clone() * &self.beta_plus_gamma;
+        let den = self.beta_gamma.one() - &self.beta_gamma;
+        let h = num.clone().hypot(&den);
+        (den / &h, num / h)
     }
 
     /// omega(s) = Omega(sqrt s) - Omega0 for complex s near [0, m^2), free of cancellation as
@@ -162,6 +191,7 @@ impl<T: CachedRules> InnerRule<T> {
         let p2 = p.clone().sqr();
         let mut n = ((f64::from(prec) * 0.45) as usize).max(24);
         let mut prev: Option<Self> = None;
+        let mut last_d: Option<f64> = None;
         let eps = p.epsilon().to_f64().max(1e-300);
         for _ in 0..6 {
             let mut rule = Self::with_nodes(omega, &p2, n)?;
@@ -180,7 +210,10 @@ impl<T: CachedRules> InnerRule<T> {
                     d = d.max((a.clone() - &b).abs().to_f64());
                     scale = scale.max(a.abs().to_f64()).max(1.0);
                 }
-                if d <= 16.0 * eps * scale {
+                // converged, or stuck at the round-off floor (no longer decreasing)
+                let floor = last_d.is_some_and(|l: f64| d > l / 4.0) && d < 1e3 * eps * scale;
+                last_d = Some(d);
+                if d <= 16.0 * eps * scale || floor {
                     // n/2 nodes already agree with n to working precision: keep the smaller
                     // rule, with the difference as its error estimate.
                     let mut r = prev.take().expect("previous rule");

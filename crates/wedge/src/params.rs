@@ -176,11 +176,16 @@ impl Indenter {
     pub fn coupling(&self) -> Coupling {
         self.coupling
     }
-    /// cot Theta at the precision of `like`.
+    /// cot Theta at the precision of `like`, correctly rounded for the decimal angle given:
+    /// computed as tan((90 - Theta) pi/180) from the decimal text with 64 extra bits, so that
+    /// Theta close to 90 degrees (cot Theta -> 0) keeps full relative accuracy in f64 too.
     pub fn cot_theta<T: Real>(&self, like: &T) -> T {
-        let th = self.theta_deg.to_real(like) * like.pi() / 180.0;
-        let (s, c) = th.sin_cos();
-        c / s
+        let bits = like.prec().max(53) + 64;
+        let th = self.theta_deg.to_real(&rug::Float::with_val(bits, 0));
+        let comp: rug::Float = (rug::Float::with_val(bits, 90) - th)
+            * rug::Float::with_val(bits, rug::float::Constant::Pi)
+            / 180.0;
+        T::from_mpfr(&comp.tan(), like.prec())
     }
 }
 

@@ -53,6 +53,12 @@ pub struct Apex<T> {
     /// sigma/(mu cot Theta) ~ c ln(2 p/x), i.e. -Q_hat/p; `Power`: the coefficient A of
     /// sigma/(mu cot Theta) ~ A (p/x)^(2 Omega0).
     pub amplitude: T,
+    /// Two-term apex expansion sigma/(mu cot Theta) ~ `constant` + `coefficient` (p/x)^(2 Omega0)
+    /// for Omega0 != 0 (for Omega0 < 0 the second term vanishes at the apex and `constant` is
+    /// sigma(0)); for Omega0 = 0, `coefficient` multiplies arccosh(p/x) and `constant` is 0.
+    pub constant: T,
+    /// See `constant`.
+    pub coefficient: T,
 }
 
 impl<T: CachedRules> Case<T> {
@@ -68,44 +74,57 @@ impl<T: CachedRules> Case<T> {
         }
     }
 
-    /// Regime, exponent and amplitude of the leading apex term.
+    /// Regime, exponent and amplitude of the leading apex term, and the two-term expansion.
     pub fn apex(&self) -> Result<Apex<T>> {
         let q = self.q_hat()?;
         let p = self.p().clone();
         let o0 = self.omega0();
         let regime = self.regime();
+        if regime == ApexRegime::Logarithmic {
+            let c = -(q / &p);
+            return Ok(Apex {
+                regime,
+                exponent: p.zero(),
+                amplitude: c.clone(),
+                constant: p.zero(),
+                coefficient: c,
+            });
+        }
+        // A = -Q e^(S0) cos(pi Omega0)/(2 Omega0 p), eq (43)
+        let a =
+            -(q * self.s0().exp() * self.omega_fn().omega0_cos_sin().0) / (o0.clone() * 2.0 * &p);
+        let c = self.apex_constant()?;
         let (exponent, amplitude) = match regime {
-            ApexRegime::Logarithmic => (p.zero(), -(q / &p)),
-            ApexRegime::Power => {
-                let a =
-                    -(q * self.s0().exp() * (o0.clone() * p.pi()).cos()) / (o0.clone() * 2.0 * &p);
-                (o0 * 2.0, a)
-            }
-            ApexRegime::Finite => (p.zero(), self.stress_at_apex()?),
+            ApexRegime::Power => (o0 * 2.0, a.clone()),
+            _ => (p.zero(), c.clone()),
         };
         Ok(Apex {
             regime,
             exponent,
             amplitude,
+            constant: c,
+            coefficient: a,
         })
     }
 
-    /// The leading apex term of sigma_theta/(mu cot Theta) at x = r/(c1 t): (41), (43), or the
-    /// finite apex value.
+    /// The apex expansion of sigma_theta/(mu cot Theta) at x = r/(c1 t): (41) (exact when
+    /// Omega = 0) or C + A (p/x)^(2 Omega0) with (43)'s A and the constant C (for Omega0 < 0,
+    /// C = sigma(0) and the power term is the approach to it).
     pub fn apex_leading_term(&self, x: &T) -> Result<T> {
         let a = self.apex()?;
         let p = self.p().clone();
         Ok(match a.regime {
-            ApexRegime::Logarithmic => a.amplitude * (p / x).acosh(),
-            ApexRegime::Power => a.amplitude * (p / x).powf(&a.exponent),
-            ApexRegime::Finite => a.amplitude,
+            ApexRegime::Logarithmic => a.coefficient * (p / x).acosh(),
+            _ => a.constant + a.coefficient * (p / x).powf(&(self.omega0() * 2.0)),
         })
     }
 
-    /// sigma_theta(0)/(mu cot Theta) in the finite regime. The apex part of (40) is
-    /// integrated with its leading term c0 v^(-1 - 2 Omega0) subtracted and added back in
-    /// closed form (the integrand is only weakly integrable when Omega0 is close to 0).
-    fn stress_at_apex(&self) -> Result<T> {
+    /// The constant C of the apex expansion sigma ~ C + A (p/x)^(2 Omega0) (Omega0 != 0):
+    /// C = -Q [Int_0^p (g - c0 v^(-1 - 2 Omega0)) dv - c0 p^(-2 Omega0)/(2 Omega0)],
+    /// c0 = e^(S0) cos(pi Omega0) p^(-1 + 2 Omega0); the apex part is integrated with the
+    /// leading term subtracted (the integrand is only weakly integrable for Omega0 near 0, and
+    /// not integrable for Omega0 > 0). For Omega0 < 0, C = sigma(0).
+    fn apex_constant(&self) -> Result<T> {
         let p = self.p().clone();
         let o0 = self.omega0();
         let q = self.q_hat()?;
@@ -114,23 +133,27 @@ impl<T: CachedRules> Case<T> {
         let one = p.one();
         // c0 = e^(S0) cos(pi Omega0) p^(-1 + 2 Omega0)
         let c0 = self.s0().exp()
-            * (o0.clone() * p.pi()).cos()
+            * self.omega_fn().omega0_cos_sin().0
             * p.clone().powf(&(o0.clone() * 2.0 - 1.0));
         let expo = -(one.clone() + o0.clone() * 2.0);
         let g = |v: &T, pv: &T| -> T {
-            let (x, om) = self.x_on_contact(v, pv);
-            x * (om * v.pi()).cos() / v.clone().sqr()
+            let f = self.x_on_contact(v, pv);
+            f.x * f.cos / v.clone().sqr()
         };
         let lower = tanh_sinh(&p.zero(), &quarter, TsOptions::new(tol), |pt: &Point<T>| {
             let pv = p.clone() - &pt.v;
             g(&pt.v, &pv) - c0.clone() * pt.v.clone().powf(&expo)
         })
         .map_err(|e| from_quad("apex stress", e))?;
-        let upper = tanh_sinh(&quarter, &p, TsOptions::new(tol), |pt: &Point<T>| {
-            g(&pt.v, &pt.to_b)
-        })
+        let upper = tanh_sinh(
+            &quarter,
+            &p,
+            TsOptions::new(tol).right_singularity(self.edge_exponent()),
+            |pt: &Point<T>| g(&pt.v, &pt.to_b),
+        )
         .map_err(|e| from_quad("apex stress", e))?;
-        // Int_0^{p/4} c0 v^(-1 - 2 Omega0) dv = c0 (p/4)^(-2 Omega0)/(-2 Omega0)
+        // Int_0^p (g - c0 v^e) = lower + upper - c0 Int_{p/4}^p v^e, which with the
+        // -c0 p^(-2 Omega0)/(2 Omega0) of C leaves -c0 (p/4)^(-2 Omega0)/(2 Omega0):
         let lead = c0 * quarter.powf(&(o0.clone() * -2.0)) / (o0 * -2.0);
         Ok(-(q * (lower.value + upper.value + lead)))
     }

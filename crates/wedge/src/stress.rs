@@ -39,9 +39,8 @@ pub struct WithError<T> {
 impl<T: CachedRules> Case<T> {
     /// The integrand g(v) of (40) at v in (0, p), with p - v given exactly.
     fn stress_integrand(&self, v: &T, p_minus_v: &T) -> T {
-        let (x, om) = self.x_on_contact(v, p_minus_v);
-        let c = (om * v.pi()).cos();
-        x * c / v.clone().sqr()
+        let f = self.x_on_contact(v, p_minus_v);
+        f.x * f.cos / v.clone().sqr()
     }
 
     /// Int_x^p of an integrand f(v, p - v) on the contact, split at p/4 with the lower part in
@@ -60,9 +59,12 @@ impl<T: CachedRules> Case<T> {
         } else {
             x.clone()
         };
-        let e = tanh_sinh(&upper_start, p, TsOptions::new(tol), |pt: &Point<T>| {
-            f(&pt.v, &pt.to_b)
-        })
+        let e = tanh_sinh(
+            &upper_start,
+            p,
+            TsOptions::new(tol).right_singularity(self.edge_exponent),
+            |pt: &Point<T>| f(&pt.v, &pt.to_b),
+        )
         .map_err(|e| from_quad("contact integral", e))?;
         value += e.value;
         error += e.error;
@@ -101,19 +103,62 @@ impl<T: CachedRules> Case<T> {
         let e = self.contact_integral(x, |v, pv| self.stress_integrand(v, pv))?;
         let rel = self.matching()?.rel_error;
         let value = -(q * e.value);
-        let error = e.error * self.q_hat()?.to_f64().abs() + rel * value.to_f64().abs();
+        let error = 4.0 * e.error * self.q_hat()?.to_f64().abs() + rel * value.to_f64().abs();
         Ok(WithError { value, error })
     }
 
-    /// The integrand of J(x) (tangential slip rate on the contact) at v in (0, p).
+    /// The integrand of J(x) (tangential slip rate on the contact) at v in (0, p). R/v^2 is
+    /// formed as (v - m_R) [R/(v - m_R)]/v^2 with v - m_R = -((p - v) + (m_R - p)) from the
+    /// exact offset, so the integrand stays accurate when p is close to m_R.
     fn slip_integrand(&self, v: &T, p_minus_v: &T) -> T {
-        let (x, om) = self.x_on_contact(v, p_minus_v);
-        let vals = self.rayleigh().at_boundary(v, Side::Lower);
-        let (p1, l_s, r_s) = (vals.p1.re, vals.l_over_s.re, vals.r_over_s.re);
-        let (sn, cs) = (om * v.pi()).sin_cos();
+        let f = self.x_on_contact(v, p_minus_v);
+        let ray = self.rayleigh();
+        let vals = ray.at_boundary(v, Side::Lower);
+        let (p1, l_s) = (vals.p1.re, vals.l_over_s.re);
+        let v_minus_root = -(p_minus_v.clone() + &(self.m_r().clone() - self.p()));
+        let s = v.clone().sqr();
+        let r_s = if s < ray.m2().clone() / 16.0 {
+            vals.r_over_s.re
+        } else {
+            v_minus_root * ray.r_over_xi_minus_root(v) / &s
+        };
+        let m2 = ray.m2().clone();
+        let bracket = -(l_s * f.cos) + self.gamma.clone() * p1 * f.sin / m2;
+        f.x / v / r_s * bracket
+    }
+
+    /// J(0) = Int_0^p of the slip integrand, with its apex term c v^(-2 Omega0) subtracted and
+    /// integrated in closed form (2 Omega0 may be close to 1 for strong friction):
+    /// c = p^(-1 + 2 Omega0) e^(S0) (cos(pi Omega0) + gamma sin(pi Omega0)/m^2)/(2/m^2 - 2).
+    fn slip_integral_from_apex(&self) -> Result<WithError<T>> {
+        let p = self.p().clone();
+        let tol = tol_for(&p);
+        let o0 = self.omega0();
         let m2 = self.rayleigh().m2().clone();
-        let bracket = -(l_s * cs) + self.gamma.clone() * p1 * sn / m2;
-        x / v / r_s * bracket
+        let one = p.one();
+        let (cs, sn) = self.omega_fn().omega0_cos_sin();
+        let c = p.clone().powf(&(o0.clone() * 2.0 - 1.0))
+            * self.s0().exp()
+            * (cs + self.gamma.clone() * sn / &m2)
+            / ((one.clone() / &m2 - 1.0) * 2.0);
+        let e = -(o0.clone() * 2.0);
+        let quarter = p.clone() / 4.0;
+        let lower = tanh_sinh(&p.zero(), &quarter, TsOptions::new(tol), |pt: &Point<T>| {
+            let pv = p.clone() - &pt.v;
+            self.slip_integrand(&pt.v, &pv) - c.clone() * pt.v.clone().powf(&e)
+        })
+        .map_err(|e| from_quad("apex slip integral", e))?;
+        let opts = TsOptions::new(tol).right_singularity(self.edge_exponent);
+        let upper = tanh_sinh(&quarter, &p, opts, |pt: &Point<T>| {
+            self.slip_integrand(&pt.v, &pt.to_b)
+        })
+        .map_err(|e| from_quad("apex slip integral", e))?;
+        let e1 = self.omega_fn().one_minus_two_omega0();
+        let lead = c * quarter.powf(&e1) / e1;
+        Ok(WithError {
+            value: lower.value + upper.value + lead,
+            error: lower.error + upper.error,
+        })
     }
 
     /// The tangential particle velocity du_r/dt on the contact at x = r/(c1 t) in [0, p), over
@@ -130,20 +175,13 @@ impl<T: CachedRules> Case<T> {
         let (q, vh) = (mt.q_hat.clone(), mt.v_hat.clone());
         let i56 = mt.i[4].clone() + &mt.i[5];
         let j = if *x == 0.0 {
-            let tol = tol_for(&self.p);
-            let e = tanh_sinh(&x.zero(), &self.p, TsOptions::new(tol), |pt: &Point<T>| {
-                self.slip_integrand(&pt.v, &pt.to_b)
-            })
-            .map_err(|e| from_quad("apex slip integral", e))?;
-            WithError {
-                value: e.value,
-                error: e.error,
-            }
+            self.slip_integral_from_apex()?
         } else {
             self.contact_integral(x, |v, pv| self.slip_integrand(v, pv))?
         };
         let value = q.clone() * (i56 + &j.value) / &vh;
-        let error = j.error * (q / vh).to_f64().abs() + mt.rel_error * 2.0 * value.to_f64().abs();
+        let error =
+            4.0 * j.error * (q / vh).to_f64().abs() + mt.rel_error * 2.0 * value.to_f64().abs();
         Ok(WithError { value, error })
     }
 

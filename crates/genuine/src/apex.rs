@@ -1,0 +1,129 @@
+//! The apex: the Mellin eigen-equation and its exponents (errata, section 6b, re-derived).
+//!
+//! Near x = 0 the second-derivative contact condition (see [`crate::solver`]) reads, with
+//! h = dS/dx, H_y = PV Int_0^p h 2v/(v^2 - x^2) dv, H_x = PV Int_0^p h 2v^2/(x (v^2 - x^2)) dv,
+//!
+//! ```text
+//!   H_y/|p1| - gamma beta H_x/|p2| - pi (beta + gamma) c(x) h = 0,   c |p1| |p2| = m^2 L/x^2.
+//! ```
+//!
+//! For S ~ x^(-lambda), h ~ x^(-1-lambda), the Mellin integrals
+//! PV Int_0^inf 2 u^(-lambda)/(u^2 - 1) du = -pi tan(pi lambda/2) and
+//! PV Int_0^inf 2 u^(1-lambda)/(u^2 - 1) du = pi cot(pi lambda/2) give, with t = tan(pi lambda/2),
+//! |p_k| -> 1 and c -> -m^2,
+//!
+//! ```text
+//!   t^2 - m^2 (beta + gamma) t + beta gamma = 0.
+//! ```
+//!
+//! Freezing the coefficients at x gives the local equation
+//! |p2| t^2 + (beta + gamma) m^2 (L/x^2) t + beta gamma |p1| = 0, whose roots lambda(x) are the
+//! varying exponents carried by the basis; for gamma = 0 the non-zero root is exactly 2 Omega(x)
+//! of the paper (tan(pi Omega) = -m^2 beta (L/s)/|p2|), so the paper's solution lies in the span.
+
+use complexfn::{Rayleigh, Side};
+
+/// What the genuine apex stress does.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ApexKind {
+    /// S -> finite limit (gamma = 0 with coupling: only a negative root).
+    Finite,
+    /// S ~ ln x (beta = gamma = 0: double root t = 0).
+    Logarithmic,
+    /// S ~ x^(-lambda) with lambda > 0.
+    Power,
+}
+
+/// The roots of the apex eigen-equation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ApexExponents {
+    /// The exponents lambda (S ~ x^(-lambda)) of the families present in the solution, ordered
+    /// from the most singular.
+    pub lambdas: Vec<f64>,
+    /// The regime.
+    pub kind: ApexKind,
+}
+
+/// Roots t of A t^2 + B t + C = 0, with the convention that for C = 0 the root t = 0 is dropped
+/// unless B = 0 as well (a double root at 0: the logarithmic case).
+fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
+    if c == 0.0 {
+        if b == 0.0 {
+            return vec![0.0];
+        }
+        return vec![-b / a];
+    }
+    let disc = (b * b - 4.0 * a * c).max(0.0);
+    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    if q == 0.0 {
+        // b = 0 and disc = 0 impossible with c != 0 unless a c > 0 (complex roots): refuse
+        return vec![];
+    }
+    let mut r = vec![q / a, c / q];
+    r.sort_by(|x, y| y.partial_cmp(x).unwrap_or(std::cmp::Ordering::Equal));
+    r
+}
+
+/// lambda = (2/pi) atan t.
+pub fn lambda_of_t(t: f64) -> f64 {
+    2.0 / std::f64::consts::PI * t.atan()
+}
+
+/// The apex exponents of the genuine solution for m = c2/c1, coupling beta and friction gamma:
+/// the roots of t^2 - m^2 (beta + gamma) t + beta gamma = 0 (a root t = 0 from beta gamma = 0
+/// is the constant family and is not listed unless it is double).
+pub fn exponents(m: f64, beta: f64, gamma: f64) -> ApexExponents {
+    let ts = quadratic_roots(1.0, -m * m * (beta + gamma), beta * gamma);
+    let lambdas: Vec<f64> = ts.iter().map(|&t| lambda_of_t(t)).collect();
+    let kind = if lambdas.len() == 1 && lambdas[0] == 0.0 {
+        ApexKind::Logarithmic
+    } else if lambdas.iter().any(|&l| l > 0.0) {
+        ApexKind::Power
+    } else {
+        ApexKind::Finite
+    };
+    ApexExponents { lambdas, kind }
+}
+
+/// The local exponents lambda_j(x) at 0 < x < m (same ordering and count as [`exponents`]).
+pub fn local_exponents(ray: &Rayleigh<f64>, beta: f64, gamma: f64, x: f64) -> Vec<f64> {
+    let v = ray.at_boundary(&x, Side::Lower);
+    let (p1, p2, l_s) = (v.p1.re, v.p2.re, v.l_over_s.re);
+    let m2 = *ray.m2();
+    quadratic_roots(p2, (beta + gamma) * m2 * l_s, beta * gamma * p1)
+        .into_iter()
+        .map(lambda_of_t)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn gamma_zero_root_is_twice_omega0() {
+        let m: f64 = 1000.0 / 1870.83;
+        let beta = -(80.0_f64.to_radians()).cos() / (80.0_f64.to_radians()).sin();
+        let e = exponents(m, beta, 0.0);
+        let omega0 = (m * m * beta).atan() / std::f64::consts::PI;
+        assert_eq!(e.lambdas.len(), 1);
+        assert!((e.lambdas[0] - 2.0 * omega0).abs() < 1e-15);
+        assert_eq!(e.kind, ApexKind::Finite);
+        assert_eq!(exponents(m, 0.0, 0.0).kind, ApexKind::Logarithmic);
+        let f = exponents(m, beta, 0.001);
+        assert_eq!(f.kind, ApexKind::Power);
+        assert!(f.lambdas[0] > 0.0 && f.lambdas[1] < 0.0);
+    }
+
+    #[test]
+    fn local_exponents_tend_to_the_apex_ones() {
+        let m: f64 = 1000.0 / 1870.83;
+        let ray = Rayleigh::new(m).unwrap();
+        let (beta, gamma) = (-0.1, 0.6);
+        let a = exponents(m, beta, gamma).lambdas;
+        let b = local_exponents(&ray, beta, gamma, 1e-6);
+        for (x, y) in a.iter().zip(&b) {
+            assert!((x - y).abs() < 1e-10, "{x} {y}");
+        }
+    }
+}

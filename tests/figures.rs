@@ -1,0 +1,553 @@
+//! Tests of the `figures` binary: every figure's CSV agrees with direct library calls, the
+//! classical alpha-V curve is monotone and sub-Rayleigh, the regime map's boundary is
+//! gamma = cot Theta, selection and error handling behave.
+//!
+//! The binary runs with `--out` into a directory under the target directory (never into
+//! `figures/`); all figures once with `--quick` (fewer points, each computed exactly as in
+//! full mode), and fig4 once at full resolution.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::sync::OnceLock;
+
+use wedge::{Case, Coupling, Indenter, Material, Solution};
+
+const BIN: &str = env!("CARGO_BIN_EXE_figures");
+const TOL: f64 = 1e-12;
+
+fn run(args: &[&str]) -> Output {
+    Command::new(BIN)
+        .args(args)
+        .output()
+        .expect("the figures binary runs")
+}
+
+fn out_dir(name: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// All figures, quick, drawn once for every test that needs them.
+fn quick_all() -> &'static Path {
+    static DIR: OnceLock<PathBuf> = OnceLock::new();
+    DIR.get_or_init(|| {
+        let d = out_dir("figures-quick");
+        let o = run(&["--quick", "--out", d.to_str().unwrap()]);
+        assert!(
+            o.status.success(),
+            "figures --quick failed: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        d
+    })
+}
+
+/// fig4 alone at full resolution.
+fn full_fig4() -> &'static Path {
+    static DIR: OnceLock<PathBuf> = OnceLock::new();
+    DIR.get_or_init(|| {
+        let d = out_dir("figures-fig4");
+        let o = run(&["fig4", "--out", d.to_str().unwrap()]);
+        assert!(
+            o.status.success(),
+            "figures fig4 failed: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        d
+    })
+}
+
+/// A parsed CSV: the '#' header lines and the rows keyed by column name.
+struct Csv {
+    header: Vec<String>,
+    rows: Vec<HashMap<String, String>>,
+}
+
+impl Csv {
+    fn read(path: &Path) -> Csv {
+        let text = std::fs::read_to_string(path)
+            .unwrap_or_else(|e| panic!("cannot read {}: {e}", path.display()));
+        let mut header = Vec::new();
+        let mut names: Option<Vec<String>> = None;
+        let mut rows = Vec::new();
+        for line in text.lines() {
+            if let Some(h) = line.strip_prefix('#') {
+                header.push(h.trim().to_string());
+            } else if let Some(n) = &names {
+                let cells: Vec<&str> = line.split(',').collect();
+                assert_eq!(cells.len(), n.len(), "row length in {}", path.display());
+                rows.push(
+                    n.iter()
+                        .cloned()
+                        .zip(cells.iter().map(|c| c.to_string()))
+                        .collect(),
+                );
+            } else {
+                names = Some(line.split(',').map(str::to_string).collect());
+            }
+        }
+        assert!(!rows.is_empty(), "{} has no rows", path.display());
+        Csv { header, rows }
+    }
+    /// The first, middle and last row (or all rows if fewer) of those that `keep`.
+    fn some(
+        &self,
+        keep: impl Fn(&HashMap<String, String>) -> bool,
+    ) -> Vec<&HashMap<String, String>> {
+        let r: Vec<_> = self.rows.iter().filter(|r| keep(r)).collect();
+        assert!(!r.is_empty(), "no rows selected");
+        let mut idx = vec![0, r.len() / 2, r.len() - 1];
+        idx.dedup();
+        idx.into_iter().map(|i| r[i]).collect()
+    }
+}
+
+fn num(row: &HashMap<String, String>, col: &str) -> f64 {
+    let s = row.get(col).unwrap_or_else(|| panic!("no column {col}"));
+    s.parse()
+        .unwrap_or_else(|_| panic!("column {col}: '{s}' is not a number"))
+}
+
+fn text<'a>(row: &'a HashMap<String, String>, col: &str) -> &'a str {
+    row.get(col).unwrap_or_else(|| panic!("no column {col}"))
+}
+
+fn assert_close(what: &str, got: f64, want: f64) {
+    let scale = want.abs().max(1e-300);
+    assert!(
+        (got - want).abs() <= TOL * scale,
+        "{what}: CSV {got:e}, library {want:e} (relative difference {:e})",
+        (got - want).abs() / scale
+    );
+}
+
+fn m() -> f64 {
+    Material::paper().m(&0.0_f64)
+}
+
+fn c_r_over_c2() -> f64 {
+    let mat = Material::paper();
+    let case = Case::new(
+        &mat,
+        &Indenter::classical(89.0).unwrap(),
+        0.3_f64,
+        Solution::Paper,
+    )
+    .unwrap();
+    case.m_r() / case.m()
+}
+
+#[test]
+fn every_figure_writes_csv_png_svg_with_metadata() {
+    let d = quick_all();
+    for name in [
+        "fig3",
+        "fig4",
+        "fig5",
+        "fig6",
+        "fig7",
+        "regime_map",
+        "field_snapshot",
+    ] {
+        let csv = Csv::read(&d.join(format!("{name}.csv")));
+        assert_eq!(
+            csv.header[0],
+            format!("dyncontact {} figures: {name}", dyncontact::VERSION),
+            "{name}: version line"
+        );
+        assert!(
+            csv.header
+                .iter()
+                .any(|h| h.starts_with("material: c1 = 1870.83 m/s, c2 = 1000 m/s")),
+            "{name}: material"
+        );
+        assert!(
+            csv.header.iter().any(|h| h.starts_with("precision: f64")),
+            "{name}: precision"
+        );
+        assert!(
+            csv.header.iter().any(|h| h.starts_with("column ")),
+            "{name}: column meanings"
+        );
+        let png = std::fs::read(d.join(format!("{name}.png"))).expect("png written");
+        assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "{name}: PNG signature");
+        let svg = std::fs::read_to_string(d.join(format!("{name}.svg"))).expect("svg written");
+        assert!(
+            svg.contains("<svg") && svg.contains("<text"),
+            "{name}: SVG with text"
+        );
+    }
+}
+
+#[test]
+fn fig3_csv_matches_library() {
+    let csv = Csv::read(&quick_all().join("fig3.csv"));
+    let mat = Material::paper();
+    let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
+    for sol in ["paper", "as-printed"] {
+        for row in csv.some(|r| text(r, "solution") == sol) {
+            let p = num(row, "p");
+            let case = Case::new(&mat, &ind, p, Solution::parse(sol).unwrap()).unwrap();
+            assert_close("alpha/c2", num(row, "alpha_over_c2"), p / m());
+            assert_close(
+                "V/(c1 cot)",
+                num(row, "v_over_c1_cot_theta"),
+                case.v_hat().unwrap(),
+            );
+            assert_close(
+                "edge slip velocity",
+                num(row, "edge_slip_velocity_over_speed"),
+                case.edge_slip_velocity_over_speed().unwrap(),
+            );
+            assert_close(
+                "edge-following rate",
+                num(row, "edge_following_rate_over_speed"),
+                case.edge_following_rate_over_speed().unwrap(),
+            );
+        }
+    }
+}
+
+fn check_speed_rows(csv: &Csv, keep: impl Fn(&HashMap<String, String>) -> bool) {
+    let mat = Material::paper();
+    for row in csv.some(keep) {
+        let coupling = match text(row, "coupling") {
+            "on" => Coupling::On,
+            "off" => Coupling::Off,
+            other => panic!("coupling '{other}'"),
+        };
+        let ind = Indenter::new(num(row, "theta_deg"), num(row, "gamma"), coupling).unwrap();
+        let sol = Solution::parse(text(row, "solution")).unwrap();
+        let p = num(row, "p");
+        let v = Case::new(&mat, &ind, p, sol).unwrap().v_hat().unwrap();
+        assert_close("alpha/c2", num(row, "alpha_over_c2"), p / m());
+        assert_close("V/(c1 cot)", num(row, "v_over_c1_cot_theta"), v);
+        assert_close("V/(c2 cot)", num(row, "v_over_c2_cot_theta"), v / m());
+    }
+}
+
+#[test]
+fn fig4_csv_matches_library() {
+    check_speed_rows(&Csv::read(&full_fig4().join("fig4.csv")), |_| true);
+}
+
+#[test]
+fn fig4_curve_is_monotone_and_below_rayleigh_speed() {
+    let csv = Csv::read(&full_fig4().join("fig4.csv"));
+    assert!(
+        csv.rows.len() >= 100,
+        "full resolution: {} points",
+        csv.rows.len()
+    );
+    let lim = c_r_over_c2();
+    let pts: Vec<(f64, f64)> = csv
+        .rows
+        .iter()
+        .map(|r| (num(r, "v_over_c2_cot_theta"), num(r, "alpha_over_c2")))
+        .collect();
+    for w in pts.windows(2) {
+        assert!(
+            w[1].0 > w[0].0 && w[1].1 > w[0].1,
+            "not monotone between {:?} and {:?}",
+            w[0],
+            w[1]
+        );
+    }
+    for &(v, a) in &pts {
+        assert!(
+            v > 0.0 && a > 0.0 && a < lim,
+            "alpha/c2 = {a} at V/(c2 cot) = {v}, c_R/c2 = {lim}"
+        );
+    }
+    // the sweep approaches the Rayleigh speed
+    assert!(pts.last().unwrap().1 > 0.999 * lim);
+}
+
+#[test]
+fn fig4_alone_writes_only_fig4() {
+    let d = full_fig4();
+    let mut names: Vec<String> = std::fs::read_dir(d)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["fig4.csv", "fig4.png", "fig4.svg"]);
+}
+
+#[test]
+fn fig5_csv_matches_library() {
+    let csv = Csv::read(&quick_all().join("fig5.csv"));
+    let mut curves: Vec<(String, String, String, String)> = csv
+        .rows
+        .iter()
+        .map(|r| {
+            let k = |c: &str| text(r, c).to_string();
+            (k("theta_deg"), k("gamma"), k("coupling"), k("solution"))
+        })
+        .collect();
+    curves.dedup();
+    assert_eq!(
+        curves.len(),
+        5,
+        "classical + 2 angles x 2 variants: {curves:?}"
+    );
+    for c in &curves {
+        check_speed_rows(&csv, |r| {
+            (
+                text(r, "theta_deg"),
+                text(r, "gamma"),
+                text(r, "coupling"),
+                text(r, "solution"),
+            ) == (c.0.as_str(), c.1.as_str(), c.2.as_str(), c.3.as_str())
+        });
+    }
+}
+
+fn check_stress(name: &str, theta: f64) {
+    let csv = Csv::read(&quick_all().join(format!("{name}.csv")));
+    let mat = Material::paper();
+    for gamma in [0.001, 0.6] {
+        let ind = Indenter::new(theta, gamma, Coupling::On).unwrap();
+        let case = Case::new(&mat, &ind, 0.3_f64, Solution::Paper).unwrap();
+        let apex = case.apex().unwrap();
+        for panel in ["contact", "apex"] {
+            for row in csv.some(|r| num(r, "gamma") == gamma && text(r, "panel") == panel) {
+                let x = num(row, "r_over_c1_t");
+                assert_close("x = p r/(alpha t)", x, 0.3 * num(row, "r_over_alpha_t"));
+                assert_eq!(text(row, "regime"), apex.regime.name());
+                assert_close("2 Omega0", num(row, "two_omega0"), 2.0 * case.omega0());
+                assert_close(
+                    "sigma",
+                    num(row, "sigma_over_mu_cot_theta"),
+                    case.stress_hat(&x).unwrap().value,
+                );
+                if panel == "apex" {
+                    assert_close(
+                        "leading term",
+                        num(row, "leading_term_over_mu_cot_theta"),
+                        case.apex_leading_term(&x).unwrap(),
+                    );
+                } else {
+                    assert_eq!(text(row, "leading_term_over_mu_cot_theta"), "");
+                }
+            }
+        }
+        let expected = if gamma < 1.0 / theta.to_radians().tan() {
+            "finite"
+        } else {
+            "power"
+        };
+        assert_eq!(apex.regime.name(), expected, "Theta {theta}, gamma {gamma}");
+    }
+    // the apex panel spans r/(alpha t) from 1e-6 to 1e-1
+    let f: Vec<f64> = csv
+        .rows
+        .iter()
+        .filter(|r| text(r, "panel") == "apex")
+        .map(|r| num(r, "r_over_alpha_t"))
+        .collect();
+    let (lo, hi) = f
+        .iter()
+        .fold((f64::INFINITY, 0.0_f64), |(a, b), &x| (a.min(x), b.max(x)));
+    assert!(
+        (lo / 1e-6 - 1.0).abs() < 1e-9 && (hi / 1e-1 - 1.0).abs() < 1e-9,
+        "apex range {lo}..{hi}"
+    );
+}
+
+#[test]
+fn fig6_csv_matches_library() {
+    check_stress("fig6", 86.0);
+}
+
+#[test]
+fn fig7_csv_matches_library() {
+    check_stress("fig7", 89.0);
+}
+
+#[test]
+fn regime_map_matches_library_and_its_boundary_is_gamma_eq_cot_theta() {
+    let csv = Csv::read(&quick_all().join("regime_map.csv"));
+    let mat = Material::paper();
+    let m2 = m() * m();
+    // a few cells against the library and the closed form of Omega0
+    for row in csv
+        .some(|_| true)
+        .into_iter()
+        .chain(csv.some(|r| text(r, "regime") == "power"))
+    {
+        let (theta, gamma) = (num(row, "theta_deg"), num(row, "gamma"));
+        let case = Case::new(
+            &mat,
+            &Indenter::new(theta, gamma, Coupling::On).unwrap(),
+            0.3_f64,
+            Solution::Paper,
+        )
+        .unwrap();
+        assert_eq!(text(row, "regime"), case.regime().name());
+        assert_close("2 Omega0", num(row, "two_omega0"), 2.0 * case.omega0());
+        let beta = -1.0 / theta.to_radians().tan();
+        let closed =
+            2.0 / std::f64::consts::PI * (m2 * (beta + gamma) / (1.0 - beta * gamma)).atan();
+        assert!(
+            (num(row, "two_omega0") - closed).abs() < 1e-13,
+            "closed form at ({theta}, {gamma})"
+        );
+    }
+    // in every Theta column: finite below gamma = cot Theta, power above, and the change
+    // happens between adjacent grid values that straddle cot Theta
+    let mut columns: Vec<(f64, Vec<(f64, String)>)> = Vec::new();
+    for r in &csv.rows {
+        let (theta, gamma) = (num(r, "theta_deg"), num(r, "gamma"));
+        match columns.last_mut() {
+            Some((t, v)) if *t == theta => v.push((gamma, text(r, "regime").to_string())),
+            _ => columns.push((theta, vec![(gamma, text(r, "regime").to_string())])),
+        }
+    }
+    assert!(columns.len() >= 10);
+    for (theta, cells) in &columns {
+        let cot = 1.0 / theta.to_radians().tan();
+        for (gamma, regime) in cells {
+            let want = if *gamma < cot { "finite" } else { "power" };
+            assert_eq!(
+                regime, want,
+                "Theta {theta}, gamma {gamma}, cot Theta {cot}"
+            );
+        }
+        let last_finite = cells
+            .iter()
+            .filter(|c| c.1 == "finite")
+            .map(|c| c.0)
+            .fold(f64::NAN, f64::max);
+        let first_power = cells
+            .iter()
+            .filter(|c| c.1 == "power")
+            .map(|c| c.0)
+            .fold(f64::NAN, f64::min);
+        assert!(
+            last_finite < cot && cot < first_power,
+            "Theta {theta}: {last_finite} < {cot} < {first_power}"
+        );
+        let step = cells[1].0 - cells[0].0;
+        assert!(
+            (first_power - last_finite - step).abs() < 1e-12,
+            "Theta {theta}: cells adjacent"
+        );
+    }
+}
+
+fn region_name(r: homogeneous::Region) -> &'static str {
+    use homogeneous::Region;
+    match r {
+        Region::AheadOfP => "ahead_of_p",
+        Region::BetweenPAndS => "between_p_and_s",
+        Region::HeadWave => "head_wave",
+        Region::BehindS => "behind_s",
+    }
+}
+
+#[test]
+fn field_snapshot_csv_matches_library_and_is_zero_ahead_of_p() {
+    let csv = Csv::read(&quick_all().join("field_snapshot.csv"));
+    let mat = Material::paper();
+    let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
+    let case = Case::new(&mat, &ind, 0.3_f64, Solution::Paper).unwrap();
+    let pot = case.potentials().unwrap();
+    let stress_cols = [
+        "sxx_over_mu_cot_theta",
+        "syy_over_mu_cot_theta",
+        "sxy_over_mu_cot_theta",
+        "tau_max_over_mu_cot_theta",
+    ];
+    // a few points of every wave region against direct field evaluations
+    for region in ["behind_s", "head_wave", "between_p_and_s", "ahead_of_p"] {
+        for row in csv.some(|r| text(r, "region") == region) {
+            let (x, y) = (num(row, "x_over_c1_t"), num(row, "y_over_c1_t"));
+            let fv = homogeneous::field::at(&pot, &x, &y).unwrap();
+            assert_eq!(region_name(fv.region), region, "region at ({x}, {y})");
+            let c = fv.cartesian();
+            let tau = ((c.sxx - c.syy) / 2.0).hypot(c.sxy);
+            for (col, want) in stress_cols.iter().zip([c.sxx, c.syy, c.sxy, tau]) {
+                assert_close(&format!("{col} at ({x}, {y})"), num(row, col), want);
+            }
+        }
+    }
+    // at rest ahead of the P front r = c1 t, moving behind it; the regions as drawn (S circle
+    // r = m, head waves from (+-1, 0) tangent to it)
+    let m = m();
+    let (mut ahead, mut inside) = (0, 0);
+    for row in &csv.rows {
+        let (x, y) = (num(row, "x_over_c1_t"), num(row, "y_over_c1_t"));
+        let r = x.hypot(y);
+        assert!(y < 0.0 && (-1.1..=1.1).contains(&x) && y >= -1.1);
+        if r > 1.0 {
+            ahead += 1;
+            assert_eq!(text(row, "region"), "ahead_of_p", "({x}, {y})");
+            for col in stress_cols {
+                assert_eq!(
+                    num(row, col),
+                    0.0,
+                    "{col} ahead of the P front at ({x}, {y})"
+                );
+            }
+        } else {
+            inside += 1;
+            assert!(
+                num(row, "tau_max_over_mu_cot_theta") > 0.0,
+                "field reached ({x}, {y})"
+            );
+            // distance from the head-wave line through (+-1, 0) tangent to the S circle,
+            // positive on the side of the origin
+            let d = m - (x.abs() * m + y.abs() * (1.0 - m * m).sqrt());
+            let want = if r < m {
+                "behind_s"
+            } else if x.abs() > m * m && d > 0.0 {
+                "head_wave"
+            } else {
+                "between_p_and_s"
+            };
+            if (r - m).abs() > 1e-9 && d.abs() > 1e-9 {
+                assert_eq!(text(row, "region"), want, "({x}, {y})");
+            }
+        }
+    }
+    assert!(ahead > 0 && inside > 0, "{ahead} ahead, {inside} inside");
+    assert_eq!(ahead + inside, 24 * 12, "quick grid");
+}
+
+#[test]
+fn fig5_axis_is_clipped_but_its_csv_is_complete() {
+    let d = quick_all();
+    let csv = Csv::read(&d.join("fig5.csv"));
+    let max = csv
+        .rows
+        .iter()
+        .map(|r| num(r, "v_over_c2_cot_theta"))
+        .fold(0.0_f64, f64::max);
+    // the as-printed curves run off far beyond the drawn range near the Rayleigh speed
+    assert!(max > 2.0, "as-printed run-off kept in the CSV: max {max}");
+    let svg = std::fs::read_to_string(d.join("fig5.svg")).unwrap();
+    assert!(svg.contains("fold back"), "fig5 says the curves fold back");
+}
+
+#[test]
+fn unknown_figure_is_a_one_line_error_with_exit_code_2() {
+    let d = out_dir("figures-bad");
+    let o = run(&["fig4", "fig99", "--out", d.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err.trim_end().lines().count(), 1, "stderr: {err}");
+    assert!(err.contains("fig99"));
+    assert!(!d.join("fig4.csv").exists(), "nothing drawn on a bad name");
+    let o = run(&["--no-such-flag"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr)
+            .trim_end()
+            .lines()
+            .count(),
+        1
+    );
+}
