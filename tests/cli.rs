@@ -155,6 +155,55 @@ fn speed_instead_of_alpha_and_the_as_printed_variant() {
 }
 
 #[test]
+fn genuine_variant_from_the_command_line() {
+    // for gamma = 0 the genuine solution is the paper's (tested to 1e-10 in crates/genuine);
+    // here: the command routes to it, names it, and refuses --digits with a reason
+    let g = json(&[
+        "solve",
+        "--theta-deg",
+        "89",
+        "--gamma",
+        "0",
+        "--alpha",
+        "400",
+        "--solution",
+        "genuine",
+        "--json",
+    ]);
+    let p = json(&[
+        "solve",
+        "--theta-deg",
+        "89",
+        "--gamma",
+        "0",
+        "--alpha",
+        "400",
+        "--json",
+    ]);
+    assert_eq!(g["solution"], "genuine");
+    let (a, b) = (
+        num(&g["v_over_c1_cot_theta"]),
+        num(&p["v_over_c1_cot_theta"]),
+    );
+    assert!((a - b).abs() < 1e-9 * b, "{a} {b}");
+    let (code, _, err) = wedge(&[
+        "solve",
+        "--theta-deg",
+        "89",
+        "--gamma",
+        "0.6",
+        "--alpha",
+        "400",
+        "--solution",
+        "genuine",
+        "--digits",
+        "30",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("genuine") && err.contains("f64"), "{err}");
+}
+
+#[test]
 fn stress_field_and_curve_commands() {
     let s = json(&[
         "stress",

@@ -35,6 +35,37 @@ fn split_point<T: Real>(a: &T, b: &T, c: &T) -> T {
     }
 }
 
+/// Int_a^b g as Int_a^s + Int_s^b, each half's points carrying their distances to a and b.
+fn split_at<T, V, G>(
+    a: &T,
+    b: &T,
+    s: &T,
+    left_opts: TsOptions,
+    right_opts: TsOptions,
+    mut g: G,
+) -> Result<Estimate<V>>
+where
+    T: CachedRules,
+    V: QuadValue<T>,
+    G: FnMut(&Point<T>) -> V,
+{
+    let left = tanh_sinh(a, s, left_opts, |p: &Point<T>| {
+        g(&Point {
+            v: p.v.clone(),
+            from_a: p.from_a.clone(),
+            to_b: b.clone() - &p.v,
+        })
+    })?;
+    let right = tanh_sinh(s, b, right_opts, |p: &Point<T>| {
+        g(&Point {
+            v: p.v.clone(),
+            from_a: p.v.clone() - a,
+            to_b: p.to_b.clone(),
+        })
+    })?;
+    Ok(combine(left, right))
+}
+
 /// Sum of two estimates over adjacent intervals.
 fn combine<T: Real, V: QuadValue<T>>(l: Estimate<V>, r: Estimate<V>) -> Estimate<V> {
     let mut value = l.value;
@@ -101,21 +132,7 @@ where
         left_exponent: None,
         ..opts
     };
-    let left = tanh_sinh(a, &s, left_opts, |p: &Point<T>| {
-        g(&Point {
-            v: p.v.clone(),
-            from_a: p.from_a.clone(),
-            to_b: b.clone() - &p.v,
-        })
-    })?;
-    let right = tanh_sinh(&s, b, right_opts, |p: &Point<T>| {
-        g(&Point {
-            v: p.v.clone(),
-            from_a: p.v.clone() - a,
-            to_b: p.to_b.clone(),
-        })
-    })?;
-    let mut est = combine(left, right);
+    let mut est = split_at(a, b, &s, left_opts, right_opts, &mut g)?;
     let log = ((b.clone() - c) / (c.clone() - a)).ln();
     let cancel = (est.value.magnitude() + phi_c.magnitude() * log.clone().abs()).to_f64()
         * a.epsilon().to_f64()
@@ -253,21 +270,7 @@ where
     // For Re zeta inside the segment, split there: the integrand varies on the scale
     // |Im zeta| around Re zeta, where the nodes of both halves then cluster.
     let mut est = if inside {
-        let left = tanh_sinh(a, &x0, opts, |p: &Point<T>| {
-            g(&Point {
-                v: p.v.clone(),
-                from_a: p.from_a.clone(),
-                to_b: b.clone() - &p.v,
-            })
-        })?;
-        let right = tanh_sinh(&x0, b, opts, |p: &Point<T>| {
-            g(&Point {
-                v: p.v.clone(),
-                from_a: p.v.clone() - a,
-                to_b: p.to_b.clone(),
-            })
-        })?;
-        combine(left, right)
+        split_at(a, b, &x0, opts, opts, &mut g)?
     } else {
         tanh_sinh(a, b, opts, &mut g)?
     };
