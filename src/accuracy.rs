@@ -167,10 +167,10 @@ fn seconds(t: f64) -> String {
     }
 }
 
-/// The report as CSV with '#' header lines.
-pub fn csv(rows: &[Row]) -> String {
+/// The report as CSV with '#' header lines (`ref_bits`: precision of the reference).
+pub fn csv(rows: &[Row], ref_bits: u32) -> String {
     let mut s = format!(
-        "# dyncontact {}: error against run time; case Theta = 89 deg, gamma = 0.6, coupled, p = 0.3, solution = paper\n# errors: relative, against a {REFERENCE_BITS}-bit reference; times in seconds (one evaluation, rules cached)\n",
+        "# dyncontact {} figures: error_vs_time\n# error against run time; case Theta = 89 deg, gamma = 0.6, coupled, p = 0.3, solution = paper; material c1 = 1870.83 m/s, c2 = 1000 m/s\n# precision: per row (f64, or MPFR bits); errors: relative, against a {ref_bits}-bit reference; times in seconds (one evaluation, rules cached)\n",
         crate::VERSION
     );
     s += "precision,bits,";

@@ -551,3 +551,38 @@ fn unknown_figure_is_a_one_line_error_with_exit_code_2() {
         1
     );
 }
+
+#[test]
+fn error_vs_time_shows_errors_falling_with_precision_and_honest_estimates() {
+    let csv = Csv::read(&quick_all().join("error_vs_time.csv"));
+    assert!(csv.header.iter().any(|l| l.contains("reference")));
+    let rows = &csv.rows;
+    assert!(rows.len() >= 3);
+    let err = |r: &HashMap<String, String>, k: &str| -> f64 { r[k].parse().unwrap() };
+    // f64 row: every quantity within 1e-14 of the high-precision reference (an independent
+    // evaluation at 200 bits in quick mode), and the stated error is not below the actual one
+    let f = &rows[0];
+    assert_eq!(f["precision"], "f64");
+    for k in [
+        "err_m_r",
+        "err_omega0",
+        "err_s0",
+        "err_v_over_c1_cot_theta",
+        "err_force",
+    ] {
+        assert!(err(f, k) < 1e-14, "{k}: {}", f[k]);
+    }
+    for r in rows {
+        assert!(
+            err(r, "estimate_v") >= err(r, "err_v_over_c1_cot_theta"),
+            "{}",
+            r["precision"]
+        );
+    }
+    // more bits, smaller error
+    for w in rows.windows(2) {
+        assert!(
+            err(&w[1], "err_v_over_c1_cot_theta") < err(&w[0], "err_v_over_c1_cot_theta") * 1e-2
+        );
+    }
+}

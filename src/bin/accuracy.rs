@@ -19,9 +19,12 @@ fn main() -> ExitCode {
         Ok(rows) => {
             print!("{}", dyncontact::accuracy::markdown(&rows));
             let path = std::path::Path::new(&out).join("error_vs_time.csv");
-            if let Err(e) = std::fs::create_dir_all(&out)
-                .and_then(|_| std::fs::write(&path, dyncontact::accuracy::csv(&rows)))
-            {
+            if let Err(e) = std::fs::create_dir_all(&out).and_then(|_| {
+                std::fs::write(
+                    &path,
+                    dyncontact::accuracy::csv(&rows, dyncontact::accuracy::REFERENCE_BITS),
+                )
+            }) {
                 eprintln!("accuracy: cannot write {}: {e}", path.display());
                 return ExitCode::from(1);
             }

@@ -17,8 +17,18 @@ pub fn error_vs_time(ctx: &Ctx) -> Result<Summary> {
     std::fs::create_dir_all(&ctx.out)
         .map_err(|e| FigError(format!("cannot create {}: {e}", ctx.out.display())))?;
     let path: PathBuf = ctx.out.join("error_vs_time.csv");
-    std::fs::write(&path, csv(&rows))
-        .map_err(|e| FigError(format!("cannot write {}: {e}", path.display())))?;
+    std::fs::write(
+        &path,
+        csv(
+            &rows,
+            if ctx.quick {
+                200
+            } else {
+                dyncontact::accuracy::REFERENCE_BITS
+            },
+        ),
+    )
+    .map_err(|e| FigError(format!("cannot write {}: {e}", path.display())))?;
     // log10 of the errors (drawn linearly: the range spans a hundred decades)
     let floor = |e: f64| e.max(1e-120).log10();
     let mut solve = Panel::new(
