@@ -188,13 +188,10 @@ fn bench_inverse(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(
-    benches,
-    bench_rayleigh,
-    bench_case_build,
-    bench_stress_profile,
-    bench_full_solve,
-    bench_curve,
-    bench_inverse
-);
+criterion_group! {
+    name = benches;
+    // no plots: the figures' plotters build carries no system font for criterion's charts
+    config = Criterion::default().without_plots();
+    targets = bench_rayleigh, bench_case_build, bench_stress_profile, bench_full_solve, bench_curve, bench_inverse
+}
 criterion_main!(benches);
