@@ -117,6 +117,22 @@ impl<T: Real> Rayleigh<T> {
         self.with_radicals(Cx::real(s), p1, p2)
     }
 
+    /// (|p1|, |p2|, L/xi^2) on the cut 0 <= xi < m, in real arithmetic (the lower boundary
+    /// values; L/xi^2 in the cancellation-free form of the module docs). The fast path of the
+    /// functions of xi^2 that only need these three.
+    pub fn cut_values(&self, xi: &T) -> (T, T, T) {
+        let s = xi.clone().sqr();
+        let one = s.one();
+        let sm = s.clone() * &self.inv_m2;
+        let p1 = (one.clone() - &s).sqrt().recip();
+        let p2 = (one.clone() - &sm).sqrt().recip();
+        let q = p1.clone() * &p2;
+        let w1 = q.clone().recip() + 1.0;
+        let a = one + &self.inv_m2 - sm;
+        let l_s = q * (self.inv_m2.clone() - a * 2.0 / w1);
+        (p1, p2, l_s)
+    }
+
     /// The analytic continuation, in s = zeta^2, of the lower boundary values on (0, m):
     /// p_k = (1 - s/m_k^2)^(-1/2) with the principal power (real positive for s < m_k^2), so
     /// that functions of xi^2 built from |p1|, |p2|, L and R on (0, m) extend to complex s.
@@ -322,6 +338,21 @@ mod tests {
             let c = ray.continued(&Cx::new(xi * xi, 0.0));
             assert!((b.l_over_s.clone() - &c.l_over_s).abs() < 1e-14);
             assert!((b.p2.clone() - &c.p2).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn cut_values_match_the_boundary_values() {
+        let ray = Rayleigh::new(0.534_f64).unwrap();
+        for xi in [0.0, 1e-5, 0.2, 0.49, 0.53] {
+            let b = ray.at_boundary(&xi, Side::Lower);
+            let (p1, p2, l_s) = ray.cut_values(&xi);
+            assert!((p1 - b.p1.re).abs() < 1e-15 * p1 && (p2 - b.p2.re).abs() < 1e-14 * p2);
+            assert!(
+                (l_s - b.l_over_s.re).abs() < 1e-14 * l_s.abs(),
+                "{xi}: {l_s} {}",
+                b.l_over_s.re
+            );
         }
     }
 

@@ -33,7 +33,7 @@
 //! ```
 
 use complexfn::quadrature::{gauss_legendre_rule, CachedRules};
-use complexfn::{Cx, Rayleigh, Real, Side};
+use complexfn::{Cx, Rayleigh, Real};
 
 use crate::error::{Result, WedgeError};
 
@@ -80,7 +80,20 @@ impl<T: Real> OmegaFn<T> {
 
     /// Omega(xi) for real 0 <= xi < m, eq (31).
     pub fn omega(&self, xi: &T) -> T {
-        self.omega_cos_sin(xi).0
+        if self.is_zero() {
+            return xi.zero();
+        }
+        let (num, den) = self.tan_parts(xi);
+        num.atan2(&den) / xi.pi()
+    }
+
+    /// tan(pi Omega) = num/den, eq (31): num = -m^2 (beta + gamma) L/xi^2 and
+    /// den = |p2| - beta gamma |p1| > 0 (real arithmetic on the cut).
+    fn tan_parts(&self, xi: &T) -> (T, T) {
+        let (p1, p2, l_s) = self.ray.cut_values(xi);
+        let num = -(self.ray.m2().clone() * &self.beta_plus_gamma * l_s);
+        let den = p2 - self.beta_gamma.clone() * p1;
+        (num, den)
     }
 
     /// (Omega(xi), cos(pi Omega), sin(pi Omega)) for real 0 <= xi < m. The cosine and sine
@@ -90,10 +103,7 @@ impl<T: Real> OmegaFn<T> {
         if self.is_zero() {
             return (xi.zero(), xi.one(), xi.zero());
         }
-        let v = self.ray.at_boundary(xi, Side::Lower);
-        let (p1, p2, l_s) = (v.p1.re, v.p2.re, v.l_over_s.re);
-        let num = -(self.ray.m2().clone() * &self.beta_plus_gamma * l_s);
-        let den = p2 - self.beta_gamma.clone() * p1;
+        let (num, den) = self.tan_parts(xi);
         let h = num.clone().hypot(&den);
         let om = num.clone().atan2(&den) / xi.pi();
         (om, den / &h, num / h)
