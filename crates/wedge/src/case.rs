@@ -47,6 +47,7 @@ pub struct Case<T> {
     /// -1/2 + Omega(p): the exponent of the edge singularity of H (declared to the quadrature).
     pub(crate) edge_exponent: f64,
     pub(crate) matching: OnceLock<std::result::Result<crate::matching::Matching<T>, WedgeError>>,
+    pub(crate) apex: OnceLock<std::result::Result<crate::regime::Apex<T>, WedgeError>>,
 }
 
 /// Relative tolerance, in units of the working precision's epsilon, within which
@@ -104,6 +105,7 @@ impl<T: CachedRules> Case<T> {
             on_boundary,
             edge_exponent,
             matching: OnceLock::new(),
+            apex: OnceLock::new(),
         })
     }
 

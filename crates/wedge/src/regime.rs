@@ -74,8 +74,13 @@ impl<T: CachedRules> Case<T> {
         }
     }
 
-    /// Regime, exponent and amplitude of the leading apex term, and the two-term expansion.
+    /// Regime, exponent and amplitude of the leading apex term, and the two-term expansion
+    /// (computed once per case, then cached: the finite-regime constant is a quadrature).
     pub fn apex(&self) -> Result<Apex<T>> {
+        self.apex.get_or_init(|| self.compute_apex()).clone()
+    }
+
+    fn compute_apex(&self) -> Result<Apex<T>> {
         let q = self.q_hat()?;
         let p = self.p().clone();
         let o0 = self.omega0();

@@ -102,8 +102,9 @@ impl<T: CachedRules> Case<T> {
         }
         let e = self.contact_integral(x, |v, pv| self.stress_integrand(v, pv))?;
         let rel = self.matching()?.rel_error;
+        let q_abs = q.to_f64().abs();
         let value = -(q * e.value);
-        let error = 4.0 * e.error * self.q_hat()?.to_f64().abs() + rel * value.to_f64().abs();
+        let error = 4.0 * e.error * q_abs + rel * value.to_f64().abs();
         Ok(WithError { value, error })
     }
 
