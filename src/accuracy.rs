@@ -9,6 +9,7 @@
 use std::time::Instant;
 
 use complexfn::quadrature::CachedRules;
+use rayon::prelude::*;
 use rug::Float;
 use wedge::{Case, Coupling, Indenter, Material, Result, Solution};
 
@@ -190,4 +191,66 @@ pub fn csv(rows: &[Row], ref_bits: u32) -> String {
         );
     }
     s
+}
+
+/// The accuracy of an f64 alpha-V curve against a high-precision reference.
+#[derive(Clone, Debug)]
+pub struct CurveCheck {
+    /// Number of points.
+    pub points: usize,
+    /// Largest relative error of V/(c1 cot Theta) over the curve.
+    pub max_error: f64,
+    /// Largest ratio of actual to stated error (<= 1 when the estimates hold).
+    pub worst_ratio: f64,
+    /// Largest stated relative error.
+    pub max_stated: f64,
+    /// Seconds for the whole f64 curve on one thread.
+    pub seconds: f64,
+}
+
+/// The contact speeds p = alpha/c1 of the benchmark curve: `n` points evenly spread over
+/// (0, 0.49), midpoints of n equal cells (the last one at 0.98 m_R for the paper's material).
+pub fn curve_speeds(n: usize) -> Vec<f64> {
+    (0..n).map(|k| 0.49 * (k as f64 + 0.5) / n as f64).collect()
+}
+
+/// The coupled frictional alpha-V curve of the benchmarks (Theta = 89 deg, gamma = 0.6,
+/// `paper`) in f64 on one thread, timed, and each point against `ref_bits` bits (computed in
+/// parallel).
+pub fn curve_check(n: usize, ref_bits: u32) -> Result<CurveCheck> {
+    let mat = Material::paper();
+    let ind = Indenter::new(89.0, 0.6, Coupling::On)?;
+    let ps = curve_speeds(n);
+    let t0 = Instant::now();
+    let f64s: Vec<(f64, f64)> = ps
+        .iter()
+        .map(|&p| {
+            let c = Case::new(&mat, &ind, p, Solution::Paper)?;
+            let m = c.matching()?;
+            Ok((m.v_hat, m.rel_error))
+        })
+        .collect::<Result<_>>()?;
+    let seconds = t0.elapsed().as_secs_f64();
+    let refs: Vec<Float> = ps
+        .par_iter()
+        .map(|&p| {
+            let like = Float::with_val(ref_bits, 0);
+            let pb = wedge::Param::from_f64(p).to_real(&like);
+            Case::new(&mat, &ind, pb, Solution::Paper)?.v_hat()
+        })
+        .collect::<Result<_>>()?;
+    let mut out = CurveCheck {
+        points: n,
+        max_error: 0.0,
+        worst_ratio: 0.0,
+        max_stated: 0.0,
+        seconds,
+    };
+    for ((v, stated), r) in f64s.iter().zip(&refs) {
+        let err = rel(&Float::with_val(ref_bits, *v), r);
+        out.max_error = out.max_error.max(err);
+        out.max_stated = out.max_stated.max(*stated);
+        out.worst_ratio = out.worst_ratio.max(err / stated);
+    }
+    Ok(out)
 }

@@ -29,6 +29,20 @@ fn main() -> ExitCode {
                 return ExitCode::from(1);
             }
             eprintln!("wrote {}", path.display());
+            match dyncontact::accuracy::curve_check(200, 200) {
+                Ok(c) => println!(
+                    "\nalpha-V curve (Theta = 89 deg, gamma = 0.6, coupled, paper), {} points in f64 on one thread: {:.1} ms; largest relative error of V against 200 bits {:.1e} (stated at most {:.1e}; worst actual/stated {:.2})",
+                    c.points,
+                    c.seconds * 1e3,
+                    c.max_error,
+                    c.max_stated,
+                    c.worst_ratio
+                ),
+                Err(e) => {
+                    eprintln!("accuracy: {e}");
+                    return ExitCode::from(1);
+                }
+            }
             ExitCode::SUCCESS
         }
         Err(e) => {

@@ -4,9 +4,10 @@
 //!   computed once per precision and cached ([`tanh_sinh_rule`]). Each node stores `1 - |x|`
 //!   computed directly (not as a difference), so integrands with algebraic endpoint
 //!   singularities receive their exact distance to the endpoint ([`Point`]).
-//! * [`tanh_sinh`]: the adaptive driver. Level k halves the step; the error estimate is the
-//!   difference of the last two levels, which over-estimates the error of the last level
-//!   because the rule converges quadratically once resolved.
+//! * [`tanh_sinh`]: the adaptive driver. Level k halves the step; the error of the last level
+//!   is extrapolated from the differences of the last three levels (the rule roughly doubles
+//!   its correct digits per level once resolved; see `extrapolated_error`), with a
+//!   round-off floor, so the driver stops one level earlier than the plain difference would.
 //! * [`gauss_legendre`], [`gauss_jacobi`]: f64 rules from `gauss-quad`, built once per
 //!   (degree, exponents) and cached (Gauss-Jacobi nodes cost O(n^3) to build), and
 //!   [`gauss_legendre_doubling`], a driver with an error estimate from n and 2n nodes.
@@ -466,7 +467,8 @@ where
             return V::zero_like(a);
         }
         let far = -((-one_minus_y).ln_1p() * &k).exp_m1() * &len;
-        let jac = (y.ln() * (k.clone() - 1.0)).exp() * &k * &len;
+        // dv/dy = kappa len y^(kappa - 1) = kappa near/y
+        let jac = near.clone() * &k / y;
         let p = if left {
             Point {
                 v: if near < far {
@@ -580,6 +582,9 @@ where
     let mut sum = acc; // sum with step h = 1
     let mut prev: Option<V> = None;
     let mut err = f64::INFINITY;
+    // relative difference of the previous level (for the extrapolated estimate)
+    let mut last_rel: Option<f64> = None;
+    let eps_f = eps.to_f64().max(f64::MIN_POSITIVE);
     for k in 1..=rule.max_level() {
         let h = 0.5_f64.powi(k as i32);
         let mut acc = V::zero_like(a);
@@ -601,11 +606,17 @@ where
         next.add_scaled(&acc, &hk);
         let val_prev = sum.scaled(&half.clone().abs());
         let val = next.scaled(&half.clone().abs());
-        err = val.distance(&val_prev).to_f64();
-        let scale = val.magnitude().max(mag.clone() * &hk * &half.clone().abs());
+        let diff = val.distance(&val_prev).to_f64();
+        let l1 = (mag.clone() * &hk * &half.clone().abs()).to_f64();
+        let scale = val.magnitude().to_f64().max(l1);
         sum = next;
         prev = Some(val);
-        if k >= opts.min_level && err <= opts.rel_tol * scale.to_f64() {
+        let rel = diff / scale.max(f64::MIN_POSITIVE);
+        let roundoff = 4.0 * eps_f * l1 / scale.max(f64::MIN_POSITIVE);
+        err = extrapolated_error(rel, last_rel, roundoff) * scale;
+        last_rel = Some(rel);
+        // converged, or at the round-off floor (where further levels cannot help)
+        if k >= opts.min_level && err <= opts.rel_tol.max(roundoff) * scale {
             break;
         }
     }
@@ -631,6 +642,45 @@ where
         error: err,
         evals,
     })
+}
+
+/// Order of convergence per level assumed by [`extrapolated_error`].
+///
+/// Resolved tanh-sinh roughly doubles its correct digits per level (the trapezoidal error
+/// exp(-c/h) is squared when h is halved), but the ratio of successive log-differences
+/// scatters around 2 before the asymptotic regime (1.8 to 2.6 seen on the matching and stress
+/// integrals of this library at 133 and 400 bits); mpmath's estimate, which extrapolates with
+/// the observed ratio capped at 2, was optimistic by 10^4 on one of them. 1.5 stays below
+/// every ratio observed.
+const ORDER: f64 = 1.5;
+
+/// Relative error of the last tanh-sinh level from the relative differences of the last two
+/// level pairs, `rel` = |S_k - S_(k-1)| and `last` = |S_(k-1) - S_(k-2)| (both over the
+/// integral's scale), in the spirit of mpmath's `TanhSinh.estimate_error`.
+///
+/// When the levels already converge at least with the order [`ORDER`]
+/// (ln rel/ln last >= 1.5), the error of S_k is taken as rel^1.5: one more level of that
+/// order. Otherwise (not yet resolved, rel >= last, or rel >= 1/2) it is the plain
+/// difference `rel`, which bounds the error of S_(k-1) and hence of S_k. `roundoff` (4 eps
+/// times the L1 norm of the integrand over the scale) is the floor below which no estimate
+/// goes.
+pub(crate) fn extrapolated_error(rel: f64, last: Option<f64>, roundoff: f64) -> f64 {
+    let floor = roundoff;
+    if !rel.is_finite() {
+        return f64::INFINITY;
+    }
+    let est = match last {
+        Some(l) if rel > 0.0 && rel < 0.5 && l < 1.0 && rel < l => {
+            if rel.ln() / l.ln() >= ORDER {
+                rel.powf(ORDER)
+            } else {
+                rel
+            }
+        }
+        Some(_) if rel == 0.0 => 0.0,
+        _ => rel,
+    };
+    est.max(floor)
 }
 
 /// A cached f64 rule: nodes on [-1, 1] with 1 - |x| and weights.

@@ -120,6 +120,18 @@ pub trait Real:
     /// Decimal scientific notation with `digits` significant digits (a valid JSON number).
     fn to_decimal(&self, digits: usize) -> String;
 
+    /// `self += a b` in place: for MPFR one fused operation with a single rounding and no
+    /// temporary (the hot loops of sums of products); for `f64` the plain expression.
+    #[inline]
+    fn mul_add_assign(&mut self, a: &Self, b: &Self) {
+        *self += a.clone() * b;
+    }
+    /// `self -= a b` in place (see [`Real::mul_add_assign`]).
+    #[inline]
+    fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
+        *self -= a.clone() * b;
+    }
+
     /// `x` at the precision of `self`.
     #[inline]
     fn lit(&self, x: f64) -> Self {
@@ -345,6 +357,14 @@ impl Real for f64 {
 
 impl Real for Float {
     #[inline]
+    fn mul_add_assign(&mut self, a: &Self, b: &Self) {
+        *self += a * b;
+    }
+    #[inline]
+    fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
+        *self -= a * b;
+    }
+    #[inline]
     fn from_f64_prec(x: f64, bits: u32) -> Self {
         Float::with_val(bits, x)
     }
@@ -468,5 +488,26 @@ pub fn rel_diff<T: Real>(a: &T, b: &T) -> f64 {
         d.to_f64()
     } else {
         (d / s).to_f64()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fused_multiply_add_agrees_with_the_plain_expression() {
+        let mut x = 1.5_f64;
+        x.mul_add_assign(&2.0, &3.0);
+        x.mul_sub_assign(&0.5, &1.0);
+        assert_eq!(x, 7.0);
+        let like = Float::with_val(200, 0);
+        let mut y = like.lit(1.5);
+        let third = like.lit(1.0) / 3.0;
+        y.mul_add_assign(&third, &like.lit(3.0));
+        y.mul_sub_assign(&like.lit(0.5), &like.lit(1.0));
+        assert_eq!(Real::prec(&y), 200);
+        let d: Float = y - 2.0;
+        assert!(d.abs().to_f64() < 1e-59);
     }
 }

@@ -60,7 +60,9 @@ impl<T: CachedRules> Case<T> {
     pub fn new(material: &Material, indenter: &Indenter, p: T, solution: Solution) -> Result<Self> {
         if solution == Solution::Genuine {
             return Err(WedgeError::Unsupported(
-                "solution 'genuine' is not available yet; use 'paper' or 'as-printed'".into(),
+                "solution 'genuine' is solved by the genuine crate (genuine::GenuineCase); \
+                 Case builds the paper's construction: use 'paper' or 'as-printed'"
+                    .into(),
             ));
         }
         let m = material.m(&p);
@@ -233,7 +235,7 @@ impl<T: Real> Case<T> {
         if v < self.m() {
             let om = self.omega.omega(v);
             let om_rel = om.clone() - self.omega.omega0();
-            let b = self.inner.b_with(&s, &om_rel);
+            let b = self.inner.b_with(&self.omega, &s, &om_rel);
             let e = om.clone() - 0.5;
             (v.clone().ln() * (om * -2.0) + vp.ln() * e + b).exp()
         } else {
@@ -250,7 +252,7 @@ impl<T: Real> Case<T> {
         let (om, cos, sin) = self.omega.omega_cos_sin(v);
         let s = v.clone().sqr();
         let om_rel = om.clone() - self.omega.omega0();
-        let b = self.inner.b_with(&s, &om_rel);
+        let b = self.inner.b_with(&self.omega, &s, &om_rel);
         let pv = p_minus_v.clone() * (v.clone() + &self.p);
         let one = om.one();
         let x =

@@ -166,6 +166,67 @@ impl<T: Real> OmegaFn<T> {
         arg.atan().scale(&s.re.pi().recip())
     }
 
+    /// The parts of tan(pi Omega) at s = xi^2 in the form used by [`Self::divided_difference`].
+    pub(crate) fn tan_form(&self, s: &T) -> TanForm<T> {
+        let one = s.one();
+        let inv_m2 = self.ray.m2().clone().recip();
+        let r1 = (one.clone() - s).sqrt();
+        let r2 = (one.clone() - s.clone() * &inv_m2).sqrt();
+        let w = r1.clone() * &r2;
+        let k = one.clone() * 2.0 - s.clone() * &inv_m2;
+        let q = w.clone() * (k.clone() + w.clone() * 2.0);
+        // P = 4 + s (1/m^4 - 4/m^2)
+        let pp = (inv_m2.clone().sqr() - inv_m2.clone() * 4.0) * s + 4.0;
+        let n = pp.clone() / &q;
+        let d = r2.clone().recip() - self.beta_gamma.clone() * r1.clone().recip();
+        let a = self.ray.m2().clone() * &self.beta_plus_gamma * &n / &d;
+        TanForm {
+            s: s.clone(),
+            r1,
+            r2,
+            w,
+            k,
+            q,
+            pp,
+            n,
+            d,
+            a,
+        }
+    }
+
+    /// The divided difference (Omega(sqrt u) - Omega(sqrt s))/(u - s) for 0 <= u, s < m^2,
+    /// free of cancellation however close u is to s (the limit u = s is Omega'(s)).
+    ///
+    /// With A = tan(pi Omega) = m^2 (beta + gamma) N/D, N = -L/s = P/(w (K + 2 w)),
+    /// P = 4 + s (1/m^4 - 4/m^2) (from K^2 - 4 w^2 = s P), w = r1 r2, r_k = (1 - s/m_k^2)^(1/2),
+    /// K = 2 - s/m^2 and D = 1/r2 - beta gamma/r1, every difference between u and s carries
+    /// the factor u - s explicitly:
+    ///
+    /// ```text
+    ///   w_u^2 - w_s^2 = (u - s)((u + s)/m^2 - 1 - 1/m^2),   1/r_u - 1/r_s = (u - s)/(m_k^2 r_u r_s (r_u + r_s)),
+    /// ```
+    ///
+    /// and pi (Omega_u - Omega_s) = atan((A_u - A_s)/(1 + A_u A_s)) (A_u A_s >= 0 on the cut).
+    pub(crate) fn divided_difference(&self, u: &TanForm<T>, s: &TanForm<T>) -> T {
+        let one = s.s.one();
+        let inv_m2 = self.ray.m2().clone().recip();
+        let dw2 = (u.s.clone() + &s.s) * &inv_m2 - 1.0 - &inv_m2;
+        let dw = dw2.clone() / (u.w.clone() + &s.w);
+        // Q = w K + 2 w^2: Q_u - Q_s = (u - s) dq
+        let dq = dw * &u.k - s.w.clone() * &inv_m2 + dw2 * 2.0;
+        let dp = inv_m2.clone().sqr() - inv_m2.clone() * 4.0;
+        let dn = (dp * &s.q - s.pp.clone() * dq) / (u.q.clone() * &s.q);
+        let dinv =
+            |ru: &T, rs: &T, inv_mk2: &T| inv_mk2.clone() / (ru.clone() * rs * (ru.clone() + rs));
+        let dd = dinv(&u.r2, &s.r2, &inv_m2) - self.beta_gamma.clone() * dinv(&u.r1, &s.r1, &one);
+        let da = self.ray.m2().clone() * &self.beta_plus_gamma * (dn * &s.d - s.n.clone() * dd)
+            / (u.d.clone() * &s.d);
+        let y = da / (u.a.clone() * &s.a + 1.0);
+        let z = y.clone() * (u.s.clone() - &s.s);
+        let atan_ratio = if z == 0.0 { one } else { z.clone().atan() / z };
+        y * atan_ratio / s.s.pi()
+    }
+
     /// Omega continued analytically to complex s = zeta^2 (agrees with [`Self::omega`] for
     /// real 0 <= s < m^2).
     pub fn omega_continued(&self, s: &Cx<T>) -> Cx<T> {
@@ -182,6 +243,36 @@ impl<T: Real> OmegaFn<T> {
     }
 }
 
+/// tan(pi Omega) and its parts at one s = xi^2 on the cut (see [`OmegaFn::divided_difference`]).
+#[derive(Clone, Debug)]
+pub(crate) struct TanForm<T> {
+    s: T,
+    r1: T,
+    r2: T,
+    w: T,
+    k: T,
+    q: T,
+    pp: T,
+    n: T,
+    d: T,
+    a: T,
+}
+
+/// First guess of the Gauss-Legendre degree for the u-integrals over [0, p^2] at `prec` bits.
+///
+/// The nearest singularity of omega(u) on the real axis is the branch point u = m^2, which
+/// lies on the Bernstein ellipse of parameter rho = a + sqrt(a^2 - 1), a = 2 m^2/p^2 - 1, of
+/// [0, p^2]; the rule's error then falls like rho^(-2n), so n = prec ln 2/(2 ln rho) nodes
+/// reach the working precision. A margin of 25 percent plus 8 nodes covers the prefactor;
+/// the doubling test of [`InnerRule::new`] confirms it (and doubles if a complex singularity
+/// of the arctangent lies closer).
+pub fn predicted_nodes(m: f64, p: f64, prec: u32) -> usize {
+    let a = 2.0 * (m / p).powi(2) - 1.0;
+    let rho = a + (a * a - 1.0).max(0.0).sqrt();
+    let n = f64::from(prec) * std::f64::consts::LN_2 / (2.0 * rho.ln().max(1e-3));
+    ((1.25 * n).ceil() as usize + 8).clamp(16, 4096)
+}
+
 /// Omega - Omega0 tabulated on a Gauss-Legendre rule in u over [0, p^2]: the one table behind
 /// b, S0 and Lambda0.
 #[derive(Clone, Debug)]
@@ -189,6 +280,9 @@ pub struct InnerRule<T> {
     p2: T,
     /// (u_j, w_j, omega(u_j)) with omega = Omega - Omega0.
     nodes: Vec<(T, T, T)>,
+    /// tan(pi Omega) in parts at each node, for the divided differences of nodes close to the
+    /// evaluation point (empty when Omega = 0).
+    forms: Vec<TanForm<T>>,
     /// |S0(n) - S0(n/2)|, the convergence estimate of the rule (absolute).
     error: f64,
 }
@@ -199,7 +293,7 @@ impl<T: CachedRules> InnerRule<T> {
     pub fn new(omega: &OmegaFn<T>, p: &T) -> Result<Self> {
         let prec = p.prec();
         let p2 = p.clone().sqr();
-        let mut n = ((f64::from(prec) * 0.45) as usize).max(24);
+        let mut n = predicted_nodes(omega.rayleigh().m().to_f64(), p.to_f64(), prec);
         let mut prev: Option<Self> = None;
         let mut last_d: Option<f64> = None;
         let eps = p.epsilon().to_f64().max(1e-300);
@@ -244,17 +338,29 @@ impl<T: CachedRules> InnerRule<T> {
     fn with_nodes(omega: &OmegaFn<T>, p2: &T, n: usize) -> Result<Self> {
         let rule = gauss_legendre_rule::<T>(n, p2.prec())?;
         let half = p2.clone() / 2.0;
-        let nodes = rule
+        let zero = omega.is_zero();
+        let form0 = omega.tan_form(&p2.zero());
+        let mut forms = Vec::with_capacity(if zero { 0 } else { n });
+        let nodes: Vec<(T, T, T)> = rule
             .iter()
             .map(|(x, w)| {
                 let u = half.clone() * (x.clone() + 1.0);
-                let om = omega.omega_rel(&Cx::real(u.clone())).re;
+                let om = if zero {
+                    u.zero()
+                } else {
+                    // omega(u) = u (Omega(u) - Omega(0))/(u - 0), free of cancellation
+                    let f = omega.tan_form(&u);
+                    let om = omega.divided_difference(&f, &form0) * &u;
+                    forms.push(f);
+                    om
+                };
                 (u, w.clone() * &half, om)
             })
             .collect();
         Ok(InnerRule {
             p2: p2.clone(),
             nodes,
+            forms,
             error: f64::INFINITY,
         })
     }
@@ -281,18 +387,34 @@ impl<T: Real> InnerRule<T> {
         }
         let s = xi.clone().sqr();
         let om_s = omega.omega(xi) - omega.omega0();
-        self.b_with(&s, &om_s)
+        self.b_with(omega, &s, &om_s)
     }
 
-    /// b at s = xi^2 given omega(s) = Omega(xi) - Omega0 (saves an evaluation of Omega).
-    pub fn b_with(&self, s: &T, om_s: &T) -> T {
+    /// b at s = xi^2 (0 <= s < m^2) given omega(s) = Omega(xi) - Omega0 (saves an evaluation
+    /// of Omega).
+    ///
+    /// Each term is w_j (omega(u_j) - omega(s))/(u_j - s). Where |u_j - s| < w_j (the node
+    /// spacing), the rounding of the two values of omega would be amplified by w_j/|u_j - s|
+    /// (up to 1e-10 in f64 without care); there the divided difference is formed without
+    /// cancellation ([`OmegaFn::divided_difference`]), so every term keeps the working
+    /// precision.
+    pub fn b_with(&self, omega: &OmegaFn<T>, s: &T, om_s: &T) -> T {
         let mut acc = s.zero();
-        for (u, w, om) in &self.nodes {
-            let d = u.clone() - s;
-            if d == 0.0 {
+        let mut s_form: Option<TanForm<T>> = None;
+        let mut d = s.zero();
+        for (j, (u, w, om)) in self.nodes.iter().enumerate() {
+            d.clone_from(u);
+            d -= s;
+            if d.clone().abs() < *w && !self.forms.is_empty() {
+                let sf = s_form.get_or_insert_with(|| omega.tan_form(s));
+                acc += omega.divided_difference(&self.forms[j], sf) * w;
                 continue;
             }
-            acc += (om.clone() - om_s) * w / d;
+            let mut t = om.clone();
+            t -= om_s;
+            t *= w;
+            t /= &d;
+            acc += t;
         }
         acc
     }
@@ -326,7 +448,15 @@ impl<T: Real> InnerRule<T> {
         let d1 = s.clone().add_re(&(-self.p2.clone())).abs();
         let a = (d0 + d1) / &self.p2;
         let m2 = omega.rayleigh().m2().clone();
-        let limit = (m2 * 2.0 / &self.p2 - 1.01).min(s.re.lit(1.25));
+        // The plain sum of omega(u)/(u - s) converges like rho_s^(-2n), rho_s = a + sqrt(a^2 - 1)
+        // the ellipse parameter of s: it is used only where that reaches the working
+        // precision (with a factor 4 of margin in the exponent); closer to the segment the
+        // subtracted form, whose integrand is analytic, is summed. That form needs omega(s),
+        // analytic inside the ellipse through the branch point u = m^2.
+        let n = self.nodes.len().max(1) as f64;
+        let rho = 2f64.powf(1.25 * f64::from(s.re.prec()) / (2.0 * n));
+        let a_plain = s.re.lit(0.5 * (rho + 1.0 / rho));
+        let limit = (m2 * 2.0 / &self.p2 - 1.01).min(a_plain);
         if a < limit {
             let om_s = omega.omega_rel(&s);
             let mut acc = Cx::real(s.re.zero());
@@ -379,6 +509,55 @@ mod tests {
         let a = small.omega_rel(&s);
         let b = small.omega_continued(&s).add_re(&-small.omega0());
         assert!((a - b).abs() < 1e-15);
+    }
+
+    #[test]
+    fn divided_difference_matches_the_difference_quotient() {
+        // at 256 bits the plain quotient loses at most ~1e-60 for |u - s| >= 1e-15
+        let big = omega_fn(&Float::with_val(256, 0), -0.0175, 0.6);
+        let small = omega_fn(&0.0_f64, -0.0175, 0.6);
+        for (u, s) in [
+            (0.01, 0.0100001),
+            (0.2, 0.2 + 1e-13),
+            (0.05, 0.27),
+            (1e-9, 0.0),
+        ] {
+            let (ub, sb) = (Float::with_val(256, u), Float::with_val(256, s));
+            let exact = (big.omega(&ub.clone().sqrt()) - big.omega(&sb.clone().sqrt()))
+                / (ub.clone() - &sb);
+            let got_b = big.divided_difference(&big.tan_form(&ub), &big.tan_form(&sb));
+            assert!(rd(&got_b, &exact) < 1e-55, "{u} {s}");
+            let got = small.divided_difference(&small.tan_form(&u), &small.tan_form(&s));
+            let rel = ((got - exact.to_f64()) / exact.to_f64()).abs();
+            assert!(rel < 1e-14, "f64 {u} {s}: {got} vs {exact}");
+        }
+        // u = s: the derivative, against a central difference at 256 bits
+        let s = Float::with_val(256, 0.15);
+        let h = Float::with_val(256, 1e-25);
+        let deriv =
+            (big.omega(&(s.clone() + &h).sqrt()) - big.omega(&(s.clone() - &h).sqrt())) / (h * 2.0);
+        let f = big.tan_form(&s);
+        assert!(rd(&big.divided_difference(&f, &f), &deriv) < 1e-45);
+    }
+
+    #[test]
+    fn b_keeps_full_precision_next_to_the_nodes() {
+        // b at points within a hair of every node of the f64 rule, against 256 bits
+        let p = 0.3;
+        let small = omega_fn(&0.0_f64, -0.0175, 0.6);
+        let big = omega_fn(&Float::with_val(256, 0), -0.0175, 0.6);
+        let rule = InnerRule::new(&small, &p).unwrap();
+        let rule_b = InnerRule::new(&big, &Float::with_val(256, p)).unwrap();
+        for (u, _, _) in &rule.nodes {
+            for off in [0.0, 1e-15, -3e-12, 1e-9, 2e-7] {
+                let xi = (u + off).max(0.0).sqrt();
+                let got = rule.b(&small, &xi);
+                let exact = rule_b.b(&big, &Float::with_val(256, xi));
+                // absolute: the terms of the sum are O(1), b itself may be small
+                let err = (got - exact.to_f64()).abs();
+                assert!(err < 1e-14, "xi {xi}: {got} vs {exact}");
+            }
+        }
     }
 
     fn rd(a: &Float, b: &Float) -> f64 {

@@ -137,6 +137,8 @@ pub struct Indenter {
     theta_deg: Param,
     gamma: Param,
     coupling: Coupling,
+    /// cot Theta correctly rounded to f64 (formed once: the f64 path asks for it per case).
+    cot_f64: f64,
 }
 
 impl Indenter {
@@ -153,10 +155,12 @@ impl Indenter {
         if !(gamma.value.is_finite() && gamma.value >= 0.0) {
             return Err(invalid("gamma", gamma.text(), "[0, inf)"));
         }
+        let cot_f64 = cot_theta_mpfr(&theta_deg, 53).to_f64();
         Ok(Indenter {
             theta_deg,
             gamma,
             coupling,
+            cot_f64,
         })
     }
     /// The classical indenter: frictionless and uncoupled (Theta enters only through the
@@ -180,13 +184,21 @@ impl Indenter {
     /// computed as tan((90 - Theta) pi/180) from the decimal text with 64 extra bits, so that
     /// Theta close to 90 degrees (cot Theta -> 0) keeps full relative accuracy in f64 too.
     pub fn cot_theta<T: Real>(&self, like: &T) -> T {
-        let bits = like.prec().max(53) + 64;
-        let th = self.theta_deg.to_real(&rug::Float::with_val(bits, 0));
-        let comp: rug::Float = (rug::Float::with_val(bits, 90) - th)
-            * rug::Float::with_val(bits, rug::float::Constant::Pi)
-            / 180.0;
-        T::from_mpfr(&comp.tan(), like.prec())
+        if like.prec() <= 53 {
+            return T::from_f64_prec(self.cot_f64, like.prec());
+        }
+        T::from_mpfr(&cot_theta_mpfr(&self.theta_deg, like.prec()), like.prec())
     }
+}
+
+/// tan((90 - Theta) pi/180) from the decimal angle, with 64 bits beyond `bits`.
+fn cot_theta_mpfr(theta_deg: &Param, bits: u32) -> rug::Float {
+    let bits = bits.max(53) + 64;
+    let th = theta_deg.to_real(&rug::Float::with_val(bits, 0));
+    let comp: rug::Float = (rug::Float::with_val(bits, 90) - th)
+        * rug::Float::with_val(bits, rug::float::Constant::Pi)
+        / 180.0;
+    comp.tan()
 }
 
 /// Which solution of the problem a result belongs to; named in every output.
@@ -213,6 +225,17 @@ impl Solution {
             Solution::Genuine => "genuine",
         }
     }
+    /// The default variant for an indenter: `genuine` when gamma > 0 (the paper's construction
+    /// then carries an apex dislocation), `paper` for gamma = 0, where the two coincide and the
+    /// paper's closed form is the faster and more precise route.
+    pub fn default_for(indenter: &Indenter) -> Self {
+        if indenter.gamma().value() > 0.0 {
+            Solution::Genuine
+        } else {
+            Solution::Paper
+        }
+    }
+
     /// Parse a command-line name.
     pub fn parse(s: &str) -> Result<Self> {
         match s {
