@@ -221,19 +221,18 @@ fn solver_err(e: genuine::GenuineError) -> WedgeError {
     }
 }
 
-/// The genuine solution (f64 only) for a contact speed.
-pub fn genuine_case(input: &CaseInput, speed: Speed) -> Result<genuine::GenuineCase> {
-    if input.digits.is_some() {
-        return Err(WedgeError::Unsupported(
-            "the genuine solution is computed in f64 only: omit --digits (or use --solution paper)"
-                .into(),
-        ));
-    }
+/// The genuine solution for a contact speed, at the precision of `like` (the solver's
+/// options for that precision, [`genuine::SolveOptions::for_precision`]).
+pub fn genuine_case<T: CachedRules>(
+    input: &CaseInput,
+    speed: Speed,
+    like: &T,
+) -> Result<genuine::GenuineCase<T>> {
     let c1 = input.material.c1().value();
     let m_r = complexfn::Rayleigh::new(input.material.m(&0.0_f64))?
         .m_r()
         .to_owned();
-    let opts = genuine::SolveOptions::default();
+    let opts = genuine::SolveOptions::for_precision(like.prec());
     match speed {
         Speed::Alpha(a) => {
             if !(a.is_finite() && a > 0.0 && a < m_r * c1) {
@@ -243,7 +242,8 @@ pub fn genuine_case(input: &CaseInput, speed: Speed) -> Result<genuine::GenuineC
                     range: format!("(0, c_R) = (0, {}) m/s", m_r * c1),
                 });
             }
-            genuine::GenuineCase::solve(&input.material, &input.indenter, a / c1, opts)
+            let p = wedge::Param::from_f64(a).to_real(like) / input.material.c1().to_real(like);
+            genuine::GenuineCase::solve(&input.material, &input.indenter, p, opts)
                 .map_err(solver_err)
         }
         Speed::Indenter(v) => {
@@ -254,13 +254,14 @@ pub fn genuine_case(input: &CaseInput, speed: Speed) -> Result<genuine::GenuineC
                     range: "(0, inf) m/s".into(),
                 });
             }
-            let v_hat = v / (c1 * input.indenter.cot_theta(&0.0_f64));
+            let v_hat = wedge::Param::from_f64(v).to_real(like)
+                / (input.material.c1().to_real(like) * input.indenter.cot_theta(like));
             genuine::GenuineCase::for_speed(
                 &input.material,
                 &input.indenter,
                 v_hat,
-                m_r * 1e-6,
-                m_r * (1.0 - 1e-6),
+                like.lit(m_r * 1e-6),
+                like.lit(m_r * (1.0 - 1e-6)),
                 opts,
             )
             .map_err(solver_err)
@@ -270,14 +271,19 @@ pub fn genuine_case(input: &CaseInput, speed: Speed) -> Result<genuine::GenuineC
 
 /// The `solve` report of the genuine solution (keys of [`SOLVE_KEYS`]; quantities that belong
 /// to the paper's construction only, such as Omega0, Q and the apex dislocation, are null).
-pub fn genuine_report(
+/// `error_estimate` is the relative change of V between the two basis sizes of the solve (plus
+/// the precision's round-off floor): it bounds the coarse solve and so over-states the error
+/// of the reported one.
+pub fn genuine_report<T: CachedRules>(
     input: &CaseInput,
-    g: &genuine::GenuineCase,
+    g: &genuine::GenuineCase<T>,
     full: bool,
 ) -> Result<Map<String, Value>> {
-    let c1 = input.material.c1().value();
-    let cot = input.indenter.cot_theta(&0.0_f64);
-    let ray = complexfn::Rayleigh::new(input.material.m(&0.0_f64))?;
+    let digits = input.out_digits();
+    let like = g.p();
+    let c1 = input.material.c1().to_real(&like);
+    let cot = input.indenter.cot_theta(&like);
+    let ray = complexfn::Rayleigh::new(input.material.m(&like))?;
     let (apex, amp) = g.apex();
     let mut o = Map::new();
     for k in SOLVE_KEYS {
@@ -287,11 +293,11 @@ pub fn genuine_report(
         "solution".into(),
         Value::String(Solution::Genuine.name().into()),
     );
-    o.insert("alpha".into(), f(g.p() * c1));
-    o.insert("speed".into(), f(g.v_hat() * c1 * cot));
-    o.insert("p".into(), f(g.p()));
-    o.insert("m".into(), f(*ray.m()));
-    o.insert("m_r".into(), f(*ray.m_r()));
+    o.insert("alpha".into(), real(&(g.p() * c1.clone()), digits));
+    o.insert("speed".into(), real(&(g.v_hat() * c1 * cot), digits));
+    o.insert("p".into(), real(&g.p(), digits));
+    o.insert("m".into(), real(ray.m(), digits));
+    o.insert("m_r".into(), real(ray.m_r(), digits));
     let regime = match apex.kind {
         genuine::ApexKind::Finite => "finite",
         genuine::ApexKind::Logarithmic => "logarithmic",
@@ -299,14 +305,20 @@ pub fn genuine_report(
     };
     o.insert("regime".into(), Value::String(regime.into()));
     let lambda = if apex.kind == genuine::ApexKind::Power {
-        apex.lambdas[0]
+        apex.lambdas[0].clone()
     } else {
-        0.0
+        g.p().zero()
     };
-    o.insert("apex_exponent".into(), f(lambda));
-    o.insert("apex_amplitude_over_mu_cot_theta".into(), f(amp));
-    o.insert("v_over_c1_cot_theta".into(), f(g.v_hat()));
-    o.insert("force_over_a_mu_cot_theta".into(), f(g.force_hat()));
+    o.insert("apex_exponent".into(), real(&lambda, digits));
+    o.insert(
+        "apex_amplitude_over_mu_cot_theta".into(),
+        real(&amp, digits),
+    );
+    o.insert("v_over_c1_cot_theta".into(), real(&g.v_hat(), digits));
+    o.insert(
+        "force_over_a_mu_cot_theta".into(),
+        real(&g.force_hat(), digits),
+    );
     if full {
         o.insert(
             "slip_direction_ok".into(),
@@ -316,14 +328,30 @@ pub fn genuine_report(
             "contact_compressive".into(),
             Value::Bool(g.contact_compressive().map_err(solver_err)?),
         );
+        o.insert(
+            "no_interpenetration".into(),
+            Value::Bool(g.no_interpenetration().map_err(solver_err)?.0),
+        );
     }
     o.insert(
         "error_estimate".into(),
-        f(g.error_estimate() / g.v_hat().abs()),
+        f(g.error_estimate() / g.v_hat().to_f64().abs()),
     );
-    o.insert("digits".into(), Value::Number(16.into()));
+    o.insert("digits".into(), Value::Number(digits.into()));
     add_inputs(&mut o, input);
     Ok(o)
+}
+
+/// The genuine `solve` report at the requested precision.
+fn genuine_solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
+    match input.precision()? {
+        Precision::F64 => genuine_report(input, &genuine_case(input, speed, &0.0_f64)?, full),
+        Precision::Bits(b) => genuine_report(
+            input,
+            &genuine_case(input, speed, &Float::with_val(b, 0))?,
+            full,
+        ),
+    }
 }
 
 /// Solve a case and report it, at the requested precision. With `digits`, the case is solved
@@ -331,8 +359,7 @@ pub fn genuine_report(
 /// quadrature estimate and the difference between the two: never optimistic.
 pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
     if input.solution == Solution::Genuine {
-        let g = genuine_case(input, speed)?;
-        return genuine_report(input, &g, full);
+        return genuine_solve(input, speed, full);
     }
     let digits = input.out_digits();
     match input.precision()? {
@@ -455,20 +482,14 @@ pub fn stress_values(
 ) -> Result<(Vec<Value>, f64)> {
     let digits = input.out_digits();
     if input.solution == Solution::Genuine {
-        let g = genuine_case(input, speed)?;
-        let mut out = Vec::new();
-        for fp in at {
-            let fr = fp.value();
-            if !(fr > 0.0 && fr <= 1.0) {
-                return Err(WedgeError::InvalidParameter {
-                    name: "at",
-                    value: fp.text().to_string(),
-                    range: "(0, 1] (fractions r/(alpha t) of the contact half-width)".into(),
-                });
-            }
-            out.push(f(g.stress_hat(fr * g.p()).map_err(solver_err)?));
-        }
-        return Ok((out, g.error_estimate() / g.v_hat().abs()));
+        return match input.precision()? {
+            Precision::F64 => genuine_stress(&genuine_case(input, speed, &0.0_f64)?, at, digits),
+            Precision::Bits(b) => genuine_stress(
+                &genuine_case(input, speed, &Float::with_val(b, 0))?,
+                at,
+                digits,
+            ),
+        };
     }
     match input.precision()? {
         Precision::F64 => stress_profile(&input.case(speed, &0.0_f64)?, at, digits),
@@ -478,11 +499,32 @@ pub fn stress_values(
     }
 }
 
+/// Genuine contact stress at fractions r/(alpha t), with the solve's relative error estimate.
+fn genuine_stress<T: CachedRules>(
+    g: &genuine::GenuineCase<T>,
+    at: &[wedge::Param],
+    digits: usize,
+) -> Result<(Vec<Value>, f64)> {
+    let mut out = Vec::with_capacity(at.len());
+    for fp in at {
+        let fr = fp.value();
+        if !(fr > 0.0 && fr <= 1.0) {
+            return Err(WedgeError::InvalidParameter {
+                name: "at",
+                value: fp.text().to_string(),
+                range: "(0, 1] (fractions r/(alpha t) of the contact half-width)".into(),
+            });
+        }
+        let x = g.p() * fp.to_real(&g.p());
+        out.push(real(&g.stress_hat(x).map_err(solver_err)?, digits));
+    }
+    Ok((out, g.error_estimate() / g.v_hat().to_f64().abs()))
+}
+
 /// One row of an alpha-V curve (the `solve` keys without the admissibility sweep).
 pub fn curve_row(input: &CaseInput, alpha: f64) -> Result<Map<String, Value>> {
     if input.solution == Solution::Genuine {
-        let g = genuine_case(input, Speed::Alpha(alpha))?;
-        return genuine_report(input, &g, false);
+        return genuine_solve(input, Speed::Alpha(alpha), false);
     }
     match input.precision()? {
         Precision::F64 => solve_report(

@@ -44,6 +44,8 @@ fn solve_json_has_every_key_and_matches_the_library() {
         "on",
         "--alpha",
         "561.249",
+        "--solution",
+        "paper",
         "--json",
     ]);
     for k in [
@@ -94,6 +96,8 @@ fn digits_are_carried_and_the_error_estimate_is_honest() {
         "0.6",
         "--alpha",
         "561.249",
+        "--solution",
+        "paper",
         "--digits",
         "40",
         "--json",
@@ -127,6 +131,8 @@ fn speed_instead_of_alpha_and_the_as_printed_variant() {
         "10",
         "--json",
     ]);
+    // gamma > 0: the genuine solution by default, inverted for V
+    assert_eq!(v["solution"], "genuine");
     assert!((num(&v["speed"]) - 10.0).abs() < 1e-9);
     let a = json(&[
         "solve",
@@ -149,58 +155,74 @@ fn speed_instead_of_alpha_and_the_as_printed_variant() {
         "cot",
         "--alpha",
         "400",
+        "--solution",
+        "paper",
         "--json",
     ]);
     assert_eq!(g["regime"], "logarithmic");
 }
 
 #[test]
-fn genuine_variant_from_the_command_line() {
-    // for gamma = 0 the genuine solution is the paper's (tested to 1e-10 in crates/genuine);
-    // here: the command routes to it, names it, and refuses --digits with a reason
-    let g = json(&[
-        "solve",
-        "--theta-deg",
-        "89",
-        "--gamma",
-        "0",
-        "--alpha",
-        "400",
-        "--solution",
-        "genuine",
-        "--json",
-    ]);
-    let p = json(&[
-        "solve",
-        "--theta-deg",
-        "89",
-        "--gamma",
-        "0",
-        "--alpha",
-        "400",
-        "--json",
-    ]);
+fn genuine_is_the_default_for_friction_and_runs_at_high_precision() {
+    // gamma = 0: the default is the paper's solution, and the genuine one coincides with it
+    // (tested to 1e-14 in crates/genuine); here at 25 digits through the command line
+    let args = |sol: Option<&str>, gamma: &str, digits: Option<&str>| {
+        let mut a = vec![
+            "solve",
+            "--theta-deg",
+            "89",
+            "--gamma",
+            gamma,
+            "--alpha",
+            "400",
+            "--json",
+        ];
+        if let Some(s) = sol {
+            a.extend(["--solution", s]);
+        }
+        if let Some(d) = digits {
+            a.extend(["--digits", d]);
+        }
+        json(&a)
+    };
+    let p = args(None, "0", Some("25"));
+    assert_eq!(p["solution"], "paper");
+    let g = args(Some("genuine"), "0", Some("25"));
     assert_eq!(g["solution"], "genuine");
+    let big = |v: &Value| rug::Float::with_val(200, rug::Float::parse(v.to_string()).unwrap());
     let (a, b) = (
-        num(&g["v_over_c1_cot_theta"]),
-        num(&p["v_over_c1_cot_theta"]),
+        big(&g["v_over_c1_cot_theta"]),
+        big(&p["v_over_c1_cot_theta"]),
     );
-    assert!((a - b).abs() < 1e-9 * b, "{a} {b}");
+    let rel = ((a - &b) / b).abs().to_f64();
+    assert!(rel < 1e-22, "genuine vs paper at 25 digits: {rel:e}");
+    let err = num(&g["error_estimate"]);
+    assert!(err < 1e-15 && err >= rel, "{err:e} vs {rel:e}");
+    // gamma > 0: genuine by default, and its V differs from the paper's
+    let d = args(None, "0.6", None);
+    assert_eq!(d["solution"], "genuine");
+    let pp = args(Some("paper"), "0.6", None);
+    let (vg, vp) = (
+        num(&d["v_over_c1_cot_theta"]),
+        num(&pp["v_over_c1_cot_theta"]),
+    );
+    assert!((vg - vp).abs() > 1e-3 * vp, "{vg} {vp}");
+    // field: the paper's construction only, refused for genuine with a reason
     let (code, _, err) = wedge(&[
-        "solve",
+        "field",
         "--theta-deg",
         "89",
         "--gamma",
         "0.6",
         "--alpha",
         "400",
+        "--at",
+        "0.1:-0.1",
         "--solution",
         "genuine",
-        "--digits",
-        "30",
     ]);
     assert_eq!(code, 2);
-    assert!(err.contains("genuine") && err.contains("f64"), "{err}");
+    assert!(err.contains("paper") && err.contains("field"), "{err}");
 }
 
 #[test]
@@ -255,9 +277,10 @@ fn stress_field_and_curve_commands() {
     assert!(lines[0].starts_with("# dyncontact"));
     let header = lines.iter().find(|l| !l.starts_with('#')).unwrap();
     assert!(header.starts_with("solution,alpha,speed"));
+    // gamma > 0: the genuine solution by default
     let rows: Vec<&str> = lines
         .iter()
-        .filter(|l| l.starts_with("paper,"))
+        .filter(|l| l.starts_with("genuine,"))
         .copied()
         .collect();
     assert_eq!(rows.len(), 6);

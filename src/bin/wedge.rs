@@ -115,10 +115,12 @@ struct CaseArgs {
     /// Displacement coupling: on (beta = -cot Theta) or off (beta = 0).
     #[arg(long, value_enum, default_value_t = CouplingArg::On)]
     coupling: CouplingArg,
-    /// Solution variant: paper (the paper's construction, consistent matching), as-printed
-    /// (the printed matching), or genuine (no apex dislocation; f64 only).
-    #[arg(long, default_value = "paper")]
-    solution: String,
+    /// Solution variant: genuine (no apex dislocation), paper (the paper's construction,
+    /// consistent matching) or as-printed (the printed matching). Default: genuine when
+    /// gamma > 0, paper when gamma = 0 (where the two coincide); `field` computes the paper's
+    /// construction only and defaults to paper.
+    #[arg(long)]
+    solution: Option<String>,
 }
 
 #[derive(Args, Debug, Clone)]
@@ -148,7 +150,16 @@ enum CouplingArg {
     Off,
 }
 
-fn input(case: &CaseArgs, digits: Option<u32>) -> Result<CaseInput> {
+/// Which default variant a command uses when `--solution` is absent.
+#[derive(Clone, Copy, PartialEq)]
+enum Defaults {
+    /// `Solution::default_for` the indenter (solve, stress, curve).
+    ByFriction,
+    /// Always `paper` (field: the paper's construction only).
+    Paper,
+}
+
+fn input(case: &CaseArgs, digits: Option<u32>, defaults: Defaults) -> Result<CaseInput> {
     let c2 = Param::parse("c2", &case.c2)?;
     let material = match case.poisson {
         Some(nu) => Material::from_poisson(nu, c2)?,
@@ -176,10 +187,22 @@ fn input(case: &CaseArgs, digits: Option<u32>) -> Result<CaseInput> {
             });
         }
     }
+    let solution = match (&case.solution, defaults) {
+        (Some(name), _) => Solution::parse(name)?,
+        (None, Defaults::ByFriction) => Solution::default_for(&indenter),
+        (None, Defaults::Paper) => Solution::Paper,
+    };
+    if defaults == Defaults::Paper && solution == Solution::Genuine {
+        return Err(WedgeError::Unsupported(
+            "the field over the half-plane is computed for the paper's construction only: \
+             use --solution paper or as-printed (solve, stress and curve take genuine)"
+                .into(),
+        ));
+    }
     Ok(CaseInput {
         material,
         indenter,
-        solution: Solution::parse(&case.solution)?,
+        solution,
         digits,
     })
 }
@@ -218,10 +241,15 @@ fn header_lines(input: &CaseInput) -> Vec<String> {
             input.solution.name()
         ),
         format!(
-            "# precision: {}; quadrature: tanh-sinh (outer, tolerance eps^0.9), Gauss-Legendre in u = v^2 (inner, converged by doubling)",
+            "# precision: {}; {}",
             match input.digits {
                 None => "f64".to_string(),
                 Some(d) => format!("{d} digits"),
+            },
+            if input.solution == Solution::Genuine {
+                "spectral collocation of the contact pressure (error estimate from two basis sizes)"
+            } else {
+                "quadrature: tanh-sinh (outer, tolerance eps^0.9), Gauss-Legendre in u = v^2 (inner, converged by doubling)"
             }
         ),
         "# normalisation: speeds in m/s; v_over_c1_cot_theta = V/(c1 cot Theta); force_over_a_mu_cot_theta = P/(alpha t mu cot Theta); velocities over V".into(),
@@ -232,7 +260,7 @@ fn run(cli: Cli) -> Result<()> {
     let stdout = std::io::stdout();
     match cli.command {
         Command::Solve { case, speed, out } => {
-            let inp = input(&case, out.digits)?;
+            let inp = input(&case, out.digits, Defaults::ByFriction)?;
             let r = solve(&inp, speed_of(&speed), true)?;
             if out.json {
                 println!("{}", Value::Object(r));
@@ -246,7 +274,7 @@ fn run(cli: Cli) -> Result<()> {
             at,
             out,
         } => {
-            let inp = input(&case, out.digits)?;
+            let inp = input(&case, out.digits, Defaults::ByFriction)?;
             let at = parse_params("at", &at)?;
             let digits = inp.out_digits();
             let (values, err) = dyncontact::stress_values(&inp, speed_of(&speed), &at)?;
@@ -280,7 +308,7 @@ fn run(cli: Cli) -> Result<()> {
             at,
             out,
         } => {
-            let inp = input(&case, out.digits)?;
+            let inp = input(&case, out.digits, Defaults::Paper)?;
             let pts = parse_points("at", &at)?;
             let digits = inp.out_digits();
             let m = match inp.precision()? {
@@ -319,7 +347,7 @@ fn run(cli: Cli) -> Result<()> {
             csv: _,
             json,
         } => {
-            let inp = input(&case, digits)?;
+            let inp = input(&case, digits, Defaults::ByFriction)?;
             let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
             let alphas = linspace(lo, hi, n);
             let bar = ProgressBar::new(n as u64);

@@ -20,7 +20,7 @@ use std::fmt;
 use std::path::PathBuf;
 
 use indicatif::ProgressBar;
-use wedge::{Material, Solution, WedgeError};
+use wedge::{Indenter, Material, Solution, WedgeError};
 
 use plot::{Dash, Rgb};
 
@@ -79,6 +79,12 @@ impl From<WedgeError> for FigError {
     }
 }
 
+impl From<genuine::GenuineError> for FigError {
+    fn from(e: genuine::GenuineError) -> Self {
+        FigError(e.to_string())
+    }
+}
+
 /// Result alias of the figures.
 pub type Result<T> = std::result::Result<T, FigError>;
 
@@ -91,9 +97,9 @@ pub struct VariantStyle {
     pub dash: Dash,
 }
 
-/// The solution variants drawn side by side in fig3 and fig5, in legend order: `paper` solid,
-/// `as-printed` dashed. A further variant (the genuine solution, once `Case` builds it) is one
-/// more entry here, drawn dotted.
+/// The solution variants of the paper's construction drawn side by side in fig3 and fig5, in
+/// legend order: `paper` solid, `as-printed` dashed. The genuine solution ([`GENUINE`]) joins
+/// them in fig5, fig6 and fig7.
 pub const VARIANTS: &[VariantStyle] = &[
     VariantStyle {
         solution: Solution::Paper,
@@ -104,6 +110,27 @@ pub const VARIANTS: &[VariantStyle] = &[
         dash: Dash::Dashed,
     },
 ];
+
+/// The genuine solution, drawn dotted (fig5, fig6, fig7).
+pub const GENUINE: VariantStyle = VariantStyle {
+    solution: Solution::Genuine,
+    dash: Dash::Dotted,
+};
+
+/// The genuine solution in f64 for contact speed p = alpha/c1 (the solver's default options:
+/// its error estimate, from two basis sizes, is far below plotting accuracy).
+pub fn genuine_case(mat: &Material, ind: &Indenter, p: f64) -> Result<genuine::GenuineCase> {
+    genuine::GenuineCase::solve(mat, ind, p, genuine::SolveOptions::default())
+        .map_err(|e| FigError(format!("genuine solution at p = {p}: {e}")))
+}
+
+/// V/(c1 cot Theta) in f64 for any solution variant (the genuine one through its own solver).
+pub fn v_hat(mat: &Material, ind: &Indenter, p: f64, solution: Solution) -> Result<f64> {
+    match solution {
+        Solution::Genuine => Ok(genuine_case(mat, ind, p)?.v_hat()),
+        s => Ok(wedge::Case::new(mat, ind, p, s)?.v_hat()?),
+    }
+}
 
 /// The paper's material (c1 = 1870.83 m/s, c2 = 1000 m/s).
 pub fn material() -> Material {

@@ -5,9 +5,11 @@
 //!   u_r(alpha t, t)/t, both over V, for every variant of [`VARIANTS`].
 //! * `fig4`: the classical alpha-V relation (frictionless, uncoupled).
 //! * `fig5`: the alpha-V relation with coupling and friction gamma = 0.4 at Theta = 86 and 89 deg,
-//!   every variant, with the classical curve.
+//!   every variant of the paper's construction and the genuine solution (dotted, on its own
+//!   sweep of [`GENUINE_POINTS`] speeds up to [`GENUINE_TOP`] m_R), with the classical curve.
 //! * `fig6`, `fig7`: the contact stress at p = 0.3 for gamma = 0.001 and 0.6 (Theta = 86, 89 deg),
-//!   along the contact and, log-log, near the apex with the leading apex term.
+//!   along the contact and, log-log, near the apex with the paper's leading apex term; the
+//!   genuine stress (dotted) beside the paper's.
 //!
 //! Speeds on the axes are over c2, as in the paper; the indenter speed is also divided by
 //! cot Theta (V is proportional to cot Theta at fixed alpha).
@@ -18,7 +20,7 @@ use wedge::{ApexRegime, Case, Coupling, Indenter, Material, Solution};
 use super::output::{Cell, Column, Table};
 use super::plot::{save, Axis, Dash, Legend, Note, Page, Panel, Series};
 use super::{fmt_num, interior, logspace, material, palette, Ctx, FigError, Result, Summary};
-use super::{VariantStyle, VARIANTS};
+use super::{genuine_case, v_hat, VariantStyle, GENUINE, VARIANTS};
 
 /// m_R = c_R/c1 of a material.
 pub fn m_r(mat: &Material) -> Result<f64> {
@@ -258,11 +260,12 @@ pub fn classical_curve() -> Result<SpeedCurve> {
     })
 }
 
-/// The curves of fig5: classical, then Theta = 86 and 89 deg with gamma = 0.4 for each variant.
+/// The curves of fig5: classical, then Theta = 86 and 89 deg with gamma = 0.4 for each variant
+/// of the paper's construction and for the genuine solution.
 pub fn fig5_curves() -> Result<Vec<SpeedCurve>> {
     let mut c = vec![classical_curve()?];
     for (theta, color) in [(86.0, palette::BLUE), (89.0, palette::RED)] {
-        for v in VARIANTS {
+        for v in VARIANTS.iter().chain([&GENUINE]) {
             c.push(SpeedCurve {
                 label: format!("Θ = {theta}°, γ = 0.4, coupled ({})", v.solution.name()),
                 indenter: Indenter::new(theta, 0.4, Coupling::On)?,
@@ -287,15 +290,23 @@ fn speed_figure(
     let m = mat.m(&0.0_f64);
     let c_r_over_c2 = m_r(&mat)? / m;
     let ps = alpha_sweep(&mat, n, true)?;
+    let gps = genuine_sweep(&mat, ctx.points(GENUINE_POINTS, 3))?;
     let jobs: Vec<(usize, f64)> = (0..curves.len())
-        .flat_map(|k| ps.iter().map(move |&p| (k, p)))
+        .flat_map(|k| {
+            let sweep = if curves[k].solution == Solution::Genuine {
+                &gps
+            } else {
+                &ps
+            };
+            sweep.iter().map(move |&p| (k, p))
+        })
         .collect();
     ctx.plan(jobs.len());
     let vs: Vec<f64> = jobs
         .par_iter()
         .map(|&(k, p)| {
             let c = &curves[k];
-            let v = Case::new(&mat, &c.indenter, p, c.solution)?.v_hat()?;
+            let v = v_hat(&mat, &c.indenter, p, c.solution)?;
             ctx.tick();
             Ok(v)
         })
@@ -444,6 +455,21 @@ fn speed_figure(
     write(ctx, &t, &page)
 }
 
+/// Points of the genuine alpha-V curves in fig5 (each a spectral solve of about 0.1-0.3 s).
+pub const GENUINE_POINTS: usize = 40;
+
+/// Upper end of the genuine curves, as a fraction of m_R: the spectral solver's validated
+/// range ends at p = 0.45 (0.91 m_R for the paper's material); beyond, toward the Rayleigh
+/// speed, the contact pressure steepens and the default basis loses digits.
+pub const GENUINE_TOP: f64 = 0.95;
+
+/// The contact speeds of the genuine curves: n points evenly spaced in alpha on
+/// (0, GENUINE_TOP m_R].
+pub fn genuine_sweep(mat: &Material, n: usize) -> Result<Vec<f64>> {
+    let top = GENUINE_TOP * m_r(mat)?;
+    Ok((1..=n).map(|k| top * k as f64 / n as f64).collect())
+}
+
 /// The polyline `pts` cut at x = `hi`: the parts beyond are dropped, each crossing is
 /// interpolated, and a NaN point breaks the line where it leaves the range.
 pub fn clip_right(pts: &[(f64, f64)], hi: f64) -> Vec<(f64, f64)> {
@@ -511,6 +537,7 @@ pub fn contact_fractions(n: usize) -> Vec<f64> {
 /// One stress point.
 struct StressPoint {
     gamma_index: usize,
+    genuine: bool,
     apex_panel: bool,
     frac: f64,
     sigma: f64,
@@ -543,31 +570,45 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         .iter()
         .map(|c| c.apex())
         .collect::<std::result::Result<_, _>>()?;
+    let gcases: Vec<genuine::GenuineCase> = STRESS_GAMMAS
+        .par_iter()
+        .map(|&g| genuine_case(&mat, &Indenter::new(theta, g, Coupling::On)?, p))
+        .collect::<Result<_>>()?;
+    let gapex: Vec<(genuine::ApexExponents, f64)> = gcases.iter().map(|g| g.apex()).collect();
     let along = contact_fractions(ctx.points(200, 8));
     let near = logspace(1e-6, 1e-1, ctx.points(51, 6));
-    let jobs: Vec<(usize, bool, f64)> = (0..cases.len())
-        .flat_map(|g| {
+    let jobs: Vec<(usize, bool, bool, f64)> = (0..cases.len())
+        .flat_map(|g| [false, true].map(|gen| (g, gen)))
+        .flat_map(|(g, gen)| {
             along
                 .iter()
-                .map(move |&f| (g, false, f))
-                .chain(near.iter().map(move |&f| (g, true, f)))
+                .map(move |&f| (g, gen, false, f))
+                .chain(near.iter().map(move |&f| (g, gen, true, f)))
         })
         .collect();
     ctx.plan(jobs.len());
     let pts: Vec<StressPoint> = jobs
         .par_iter()
-        .map(|&(g, apex_panel, frac)| {
-            let case = &cases[g];
+        .map(|&(g, genuine, apex_panel, frac)| {
             let x = p * frac;
-            let sigma = case.stress_hat(&x)?.value;
-            let lead = if apex_panel {
-                Some(case.apex_leading_term(&x)?)
+            let (sigma, lead) = if genuine {
+                let sigma = gcases[g].stress_hat(x)?;
+                let (ex, amp) = &gapex[g];
+                let lead = apex_panel.then(|| genuine_leading_term(ex, *amp, x));
+                (sigma, lead)
             } else {
-                None
+                let case = &cases[g];
+                let lead = if apex_panel {
+                    Some(case.apex_leading_term(&x)?)
+                } else {
+                    None
+                };
+                (case.stress_hat(&x)?.value, lead)
             };
             ctx.tick();
             Ok(StressPoint {
                 gamma_index: g,
+                genuine,
                 apex_panel,
                 frac,
                 sigma,
@@ -589,12 +630,20 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
                 meaning: "friction coefficient",
             },
             Column {
+                name: "solution",
+                meaning: "solution variant (paper or genuine)",
+            },
+            Column {
                 name: "regime",
-                meaning: "the paper's apex regime",
+                meaning: "the apex regime of this row's solution",
             },
             Column {
                 name: "two_omega0",
                 meaning: "2 Omega0, the apex exponent of the paper's solution",
+            },
+            Column {
+                name: "apex_exponent",
+                meaning: "lambda of sigma ~ r^(-lambda) at the apex for this row's solution (2 Omega0 for paper; the largest eigen-equation root for genuine)",
             },
             Column {
                 name: "r_over_alpha_t",
@@ -616,17 +665,30 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
     );
     t.param(material_line(&mat)?);
     t.param(format!(
-        "indenter: Theta = {theta} deg, gamma = {}, coupling on (beta = -cot Theta); p = alpha/c1 = {p}; solution {}",
+        "indenter: Theta = {theta} deg, gamma = {}, coupling on (beta = -cot Theta); p = alpha/c1 = {p}; solutions {} and genuine",
         STRESS_GAMMAS.map(fmt_num).join(" and "),
         STRESS_SOLUTION.name()
     ));
     for q in &pts {
         let a = &apexes[q.gamma_index];
+        let two_o0 = 2.0 * cases[q.gamma_index].omega0();
+        let (solution, regime, exponent) = if q.genuine {
+            let ex = &gapex[q.gamma_index].0;
+            (
+                Solution::Genuine,
+                genuine_kind_name(ex.kind),
+                genuine_exponent(ex),
+            )
+        } else {
+            (STRESS_SOLUTION, a.regime.name(), two_o0)
+        };
         t.push(vec![
             if q.apex_panel { "apex" } else { "contact" }.into(),
             STRESS_GAMMAS[q.gamma_index].into(),
-            a.regime.name().into(),
-            (2.0 * cases[q.gamma_index].omega0()).into(),
+            solution.name().into(),
+            regime.into(),
+            two_o0.into(),
+            exponent.into(),
             q.frac.into(),
             (p * q.frac).into(),
             q.sigma.into(),
@@ -666,8 +728,25 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         let cmp = if *gamma < cot { "<" } else { ">" };
         let mine = |apex_panel: bool| {
             pts.iter()
-                .filter(move |q| q.gamma_index == g && q.apex_panel == apex_panel)
+                .filter(move |q| q.gamma_index == g && q.apex_panel == apex_panel && !q.genuine)
         };
+        let genuine_pts = |apex_panel: bool| {
+            pts.iter()
+                .filter(move |q| q.gamma_index == g && q.apex_panel == apex_panel && q.genuine)
+        };
+        let lambda = genuine_exponent(&gapex[g].0);
+        contact.series.push(Series::new(
+            format!("γ = {gamma}, genuine: apex stress ∝ (r/αt)^(−{lambda:.4})"),
+            genuine_pts(false).map(|q| (p * q.frac, q.sigma)).collect(),
+            colors[g],
+            GENUINE.dash,
+        ));
+        apex.series.push(Series::new(
+            format!("γ = {gamma}, genuine: |σ_θ| (λ = {lambda:.4})"),
+            genuine_pts(true).map(|q| (q.frac, q.sigma.abs())).collect(),
+            colors[g],
+            GENUINE.dash,
+        ));
         let along_pts: Vec<(f64, f64)> = mine(false).map(|q| (p * q.frac, q.sigma)).collect();
         contact.series.push(Series::new(
             format!(
@@ -709,7 +788,7 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
     apex.notes.push(Note {
         at: (2e-6, apex.y.lo * 1.6),
         text: format!(
-            "solution: {}; thin dashed: leading apex term",
+            "solid: {}; dotted: genuine; thin dashed: the paper's leading apex term",
             STRESS_SOLUTION.name()
         ),
         color: palette::GREY,
@@ -723,6 +802,31 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         stacked: false,
     };
     write(ctx, &t, &page)
+}
+
+/// The name of a genuine apex regime (as [`ApexRegime::name`]).
+pub fn genuine_kind_name(k: genuine::ApexKind) -> &'static str {
+    match k {
+        genuine::ApexKind::Finite => "finite",
+        genuine::ApexKind::Logarithmic => "logarithmic",
+        genuine::ApexKind::Power => "power",
+    }
+}
+
+/// The apex exponent lambda of the genuine stress (sigma ~ x^(-lambda)): the largest root of
+/// the eigen-equation, 0 for a logarithmic apex.
+pub fn genuine_exponent(ex: &genuine::ApexExponents) -> f64 {
+    ex.lambdas.iter().copied().fold(0.0_f64, f64::max)
+}
+
+/// The leading apex term of the genuine stress at x = r/(c1 t): A x^(-lambda) for a power
+/// singularity, A ln x for a logarithmic apex, the limit A for a finite one.
+pub fn genuine_leading_term(ex: &genuine::ApexExponents, amplitude: f64, x: f64) -> f64 {
+    match ex.kind {
+        genuine::ApexKind::Power => amplitude * x.powf(-genuine_exponent(ex)),
+        genuine::ApexKind::Logarithmic => amplitude * x.ln(),
+        genuine::ApexKind::Finite => amplitude,
+    }
 }
 
 /// fig6: contact stress, Theta = 86 deg.

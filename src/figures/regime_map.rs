@@ -3,14 +3,16 @@
 //! Each grid node is a [`Case`] (p = 0.3, `paper`; Omega0 and the regime do not depend on p),
 //! shaded by [`Case::regime`]: finite (Omega0 < 0, gamma < cot Theta), power (Omega0 > 0), with
 //! the logarithmic boundary gamma = cot Theta drawn as a curve and contours of the apex
-//! exponent 2 Omega0 (from [`Case::omega0`]).
+//! exponent 2 Omega0 (from [`Case::omega0`]). A second panel shows the apex exponent lambda of
+//! the genuine solution (roots of the eigen-equation, [`genuine::apex::exponents`]): a power
+//! singularity wherever gamma > 0.
 
 use rayon::prelude::*;
 use wedge::{ApexRegime, Case, Coupling, Indenter, Solution};
 
 use super::contour::{as_polyline, Grid};
 use super::output::{Column, Table};
-use super::paper::{material_line, write};
+use super::paper::{genuine_exponent, genuine_kind_name, material_line, write};
 use super::plot::{Axis, Cell, Dash, Legend, Note, Page, Panel, Rgb, Series};
 use super::{material, palette, Ctx, Result, Summary};
 
@@ -46,7 +48,8 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
     let gammas = linspace(GAMMA_RANGE.0, GAMMA_RANGE.1, ctx.points(81, 11));
     ctx.plan(thetas.len() * gammas.len());
     // one column of the grid per Theta
-    let columns: Vec<Vec<(ApexRegime, f64)>> = thetas
+    let m = mat.m(&0.0_f64);
+    let columns: Vec<Vec<Cellv>> = thetas
         .par_iter()
         .map(|&theta| {
             gammas
@@ -54,8 +57,14 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
                 .map(|&gamma| {
                     let ind = Indenter::new(theta, gamma, Coupling::On)?;
                     let case = Case::new(&mat, &ind, MAP_P, Solution::Paper)?;
+                    let g = genuine::apex::exponents(m, *case.beta(), gamma);
                     ctx.tick();
-                    Ok((case.regime(), 2.0 * case.omega0()))
+                    Ok((
+                        case.regime(),
+                        2.0 * case.omega0(),
+                        g.kind,
+                        genuine_exponent(&g),
+                    ))
                 })
                 .collect::<Result<Vec<_>>>()
         })
@@ -81,6 +90,14 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
                 name: "two_omega0",
                 meaning: "2 Omega0, Omega0 = (1/pi) atan(m^2 (beta + gamma)/(1 - beta gamma))",
             },
+            Column {
+                name: "genuine_regime",
+                meaning: "apex regime of the genuine solution (finite, logarithmic, power)",
+            },
+            Column {
+                name: "genuine_exponent",
+                meaning: "lambda of the genuine apex stress sigma ~ r^(-lambda): the largest root of t^2 - m^2 (beta + gamma) t + beta gamma = 0, lambda = (2/pi) atan t (0 when none is positive)",
+            },
         ],
     );
     t.param(material_line(&mat)?);
@@ -89,12 +106,14 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
         thetas.len(), THETA_RANGE.0, THETA_RANGE.1, gammas.len(), GAMMA_RANGE.0, GAMMA_RANGE.1
     ));
     for (theta, col) in thetas.iter().zip(&columns) {
-        for (gamma, (r, e)) in gammas.iter().zip(col) {
+        for (gamma, (r, e, gk, gl)) in gammas.iter().zip(col) {
             t.push(vec![
                 (*theta).into(),
                 (*gamma).into(),
                 r.name().into(),
                 (*e).into(),
+                genuine_kind_name(*gk).into(),
+                (*gl).into(),
             ])?;
         }
     }
@@ -139,7 +158,7 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
     // contours of 2 Omega0
     let z: Vec<Vec<f64>> = columns
         .iter()
-        .map(|c| c.iter().map(|(_, e)| *e).collect())
+        .map(|c| c.iter().map(|v| v.1).collect())
         .collect();
     let grid = Grid {
         xs: &thetas,
@@ -208,12 +227,88 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
         color: (0, 60, 120),
         size: 17,
     });
+    let gpanel = genuine_panel(&thetas, &gammas, &columns);
     let page = Page {
         name: "regime_map",
-        width: 1100,
+        width: 2000,
         height: 800,
-        panels: vec![panel],
+        panels: vec![panel, gpanel],
         stacked: false,
     };
     write(ctx, &t, &page)
+}
+
+/// One grid node: the paper's regime and 2 Omega0, the genuine regime and exponent.
+type Cellv = (ApexRegime, f64, genuine::ApexKind, f64);
+
+/// Contour levels of the genuine apex exponent lambda.
+pub const GENUINE_LEVELS: [f64; 8] = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4];
+
+/// The right panel: contours of the genuine apex exponent (a power singularity wherever
+/// gamma > 0, including below gamma = cot Theta where the paper's apex stress is finite).
+fn genuine_panel(thetas: &[f64], gammas: &[f64], columns: &[Vec<Cellv>]) -> Panel {
+    let mut panel = Panel::new(
+        "Apex exponent λ of the genuine solution, σ ~ r^(−λ)",
+        Axis::lin("wedge half-angle Θ (degrees)", THETA_RANGE.0, THETA_RANGE.1),
+        Axis::lin("friction coefficient γ", GAMMA_RANGE.0, GAMMA_RANGE.1),
+        Legend::UpperLeft,
+    );
+    let z: Vec<Vec<f64>> = columns
+        .iter()
+        .map(|c| c.iter().map(|v| v.3).collect())
+        .collect();
+    let grid = Grid {
+        xs: thetas,
+        ys: gammas,
+        z: &z,
+    };
+    let mut first = true;
+    for level in GENUINE_LEVELS {
+        let mut segs = grid.contour(level);
+        if segs.is_empty() {
+            continue;
+        }
+        let mut s = Series::new(
+            "contours of λ (step 0.05)",
+            as_polyline(&segs),
+            (140, 60, 0),
+            Dash::Solid,
+        )
+        .width(1);
+        if !first {
+            s.label = None;
+        }
+        first = false;
+        panel.series.push(s);
+        segs.sort_by(|a, b| (a.0 .0 + a.1 .0).total_cmp(&(b.0 .0 + b.1 .0)));
+        let ((xa, ya), (xb, yb)) = segs[segs.len() / 2];
+        panel.notes.push(Note {
+            at: ((xa + xb) / 2.0, (ya + yb) / 2.0),
+            text: format!("{level:.2}"),
+            color: (60, 60, 60),
+            size: 14,
+        });
+    }
+    // the paper's boundary, for comparison
+    let boundary: Vec<(f64, f64)> = linspace(THETA_RANGE.0, THETA_RANGE.1, 300)
+        .into_iter()
+        .map(|th| (th, 1.0 / th.to_radians().tan()))
+        .collect();
+    panel.series.insert(
+        0,
+        Series::new(
+            "γ = cot Θ (the paper's regime boundary)",
+            boundary,
+            palette::BLACK,
+            Dash::Dashed,
+        )
+        .width(2),
+    );
+    panel.notes.push(Note {
+        at: (60.6, 0.05),
+        text: "power singularity for every γ > 0; finite only at γ = 0".into(),
+        color: (140, 60, 0),
+        size: 17,
+    });
+    panel
 }

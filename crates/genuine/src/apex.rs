@@ -21,7 +21,7 @@
 //! varying exponents carried by the basis; for gamma = 0 the non-zero root is exactly 2 Omega(x)
 //! of the paper (tan(pi Omega) = -m^2 beta (L/s)/|p2|), so the paper's solution lies in the span.
 
-use complexfn::{Rayleigh, Side};
+use complexfn::{Rayleigh, Real};
 
 /// What the genuine apex stress does.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,48 +36,60 @@ pub enum ApexKind {
 
 /// The roots of the apex eigen-equation.
 #[derive(Clone, Debug, PartialEq)]
-pub struct ApexExponents {
+pub struct ApexExponents<T = f64> {
     /// The exponents lambda (S ~ x^(-lambda)) of the families present in the solution, ordered
     /// from the most singular.
-    pub lambdas: Vec<f64>,
+    pub lambdas: Vec<T>,
     /// The regime.
     pub kind: ApexKind,
 }
 
-/// Roots t of A t^2 + B t + C = 0, with the convention that for C = 0 the root t = 0 is dropped
-/// unless B = 0 as well (a double root at 0: the logarithmic case).
-fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
-    if c == 0.0 {
-        if b == 0.0 {
-            return vec![0.0];
+/// Roots t of A t^2 + B t + C = 0 (A > 0), with the convention that for C = 0 the root t = 0
+/// is dropped unless B = 0 as well (a double root at 0: the logarithmic case). Real roots
+/// only, in decreasing order; the stable form q = -(B + sgn(B) sqrt(disc))/2, roots q/A, C/q.
+fn quadratic_roots<T: Real>(a: &T, b: &T, c: &T) -> Vec<T> {
+    if *c == 0.0 {
+        if *b == 0.0 {
+            return vec![b.zero()];
         }
-        return vec![-b / a];
+        return vec![-(b.clone() / a)];
     }
-    let disc = (b * b - 4.0 * a * c).max(0.0);
-    let q = -0.5 * (b + b.signum() * disc.sqrt());
+    let disc = (b.clone().sqr() - a.clone() * c * 4.0).max(b.zero());
+    let sq = disc.sqrt();
+    let q = if b.is_sign_negative() {
+        (sq - b) / 2.0
+    } else {
+        -(sq + b) / 2.0
+    };
     if q == 0.0 {
-        // b = 0 and disc = 0 impossible with c != 0 unless a c > 0 (complex roots): refuse
+        // b = 0 and disc = 0 with c != 0: complex roots, refused
         return vec![];
     }
-    let mut r = vec![q / a, c / q];
-    r.sort_by(|x, y| y.partial_cmp(x).unwrap_or(std::cmp::Ordering::Equal));
-    r
+    let (r1, r2) = (q.clone() / a, c.clone() / &q);
+    if r1 >= r2 {
+        vec![r1, r2]
+    } else {
+        vec![r2, r1]
+    }
 }
 
 /// lambda = (2/pi) atan t.
-pub fn lambda_of_t(t: f64) -> f64 {
-    2.0 / std::f64::consts::PI * t.atan()
+pub fn lambda_of_t<T: Real>(t: T) -> T {
+    let pi = t.pi();
+    t.atan() * 2.0 / pi
 }
 
 /// The apex exponents of the genuine solution for m = c2/c1, coupling beta and friction gamma:
 /// the roots of t^2 - m^2 (beta + gamma) t + beta gamma = 0 (a root t = 0 from beta gamma = 0
 /// is the constant family and is not listed unless it is double).
-pub fn exponents(m: f64, beta: f64, gamma: f64) -> ApexExponents {
-    let ts = quadratic_roots(1.0, -m * m * (beta + gamma), beta * gamma);
-    let lambdas: Vec<f64> = ts.iter().map(|&t| lambda_of_t(t)).collect();
+pub fn exponents<T: Real>(m: T, beta: T, gamma: T) -> ApexExponents<T> {
+    let bpg = beta.clone() + &gamma;
+    let b = -(m.clone().sqr() * &bpg);
+    let ts = quadratic_roots(&m.one(), &b, &(beta * &gamma));
+    let lambdas: Vec<T> = ts.into_iter().map(lambda_of_t).collect();
     let kind = if lambdas.len() == 1 && lambdas[0] == 0.0 {
         ApexKind::Logarithmic
-    } else if lambdas.iter().any(|&l| l > 0.0) {
+    } else if lambdas.iter().any(|l| *l > 0.0) {
         ApexKind::Power
     } else {
         ApexKind::Finite
@@ -85,12 +97,13 @@ pub fn exponents(m: f64, beta: f64, gamma: f64) -> ApexExponents {
     ApexExponents { lambdas, kind }
 }
 
-/// The local exponents lambda_j(x) at 0 < x < m (same ordering and count as [`exponents`]).
-pub fn local_exponents(ray: &Rayleigh<f64>, beta: f64, gamma: f64, x: f64) -> Vec<f64> {
-    let v = ray.at_boundary(&x, Side::Lower);
-    let (p1, p2, l_s) = (v.p1.re, v.p2.re, v.l_over_s.re);
-    let m2 = *ray.m2();
-    quadratic_roots(p2, (beta + gamma) * m2 * l_s, beta * gamma * p1)
+/// The local exponents lambda_j(x) at 0 < x < m (same ordering and count as [`exponents`]):
+/// the roots of |p2| t^2 + (beta + gamma) m^2 (L/x^2) t + beta gamma |p1| = 0.
+pub fn local_exponents<T: Real>(ray: &Rayleigh<T>, beta: &T, gamma: &T, x: &T) -> Vec<T> {
+    let (p1, p2, l_s) = ray.cut_values(x);
+    let b = (beta.clone() + gamma) * ray.m2() * l_s;
+    let c = beta.clone() * gamma * p1;
+    quadratic_roots(&p2, &b, &c)
         .into_iter()
         .map(lambda_of_t)
         .collect()
@@ -121,7 +134,7 @@ mod tests {
         let ray = Rayleigh::new(m).unwrap();
         let (beta, gamma) = (-0.1, 0.6);
         let a = exponents(m, beta, gamma).lambdas;
-        let b = local_exponents(&ray, beta, gamma, 1e-6);
+        let b = local_exponents(&ray, &beta, &gamma, &1e-6);
         for (x, y) in a.iter().zip(&b) {
             assert!((x - y).abs() < 1e-10, "{x} {y}");
         }

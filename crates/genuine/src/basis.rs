@@ -9,7 +9,7 @@
 //! x^(-1 - 2 Omega(x)) (p^2 - x^2)^(-1/2 + Omega(x)) (eq (40)) is the first family times an
 //! analytic function, so the expansion converges geometrically.
 
-use complexfn::Rayleigh;
+use complexfn::{Rayleigh, Real};
 use wedge::omega::OmegaFn;
 
 /// Which apex factor a family carries.
@@ -25,33 +25,33 @@ pub enum Family {
     Fixed(f64),
 }
 
-/// The basis: families times Chebyshev polynomials.
+/// The basis: families times Chebyshev polynomials, at the precision of p.
 #[derive(Clone, Debug)]
-pub struct Basis {
-    p: f64,
-    beta: f64,
-    gamma: f64,
-    ray: Rayleigh<f64>,
-    omega: OmegaFn<f64>,
+pub struct Basis<T = f64> {
+    p: T,
+    beta: T,
+    gamma: T,
+    ray: Rayleigh<T>,
+    omega: OmegaFn<T>,
     families: Vec<Family>,
     degree: usize,
 }
 
-impl Basis {
+impl<T: Real> Basis<T> {
     /// The basis for contact speed p, coupling beta, friction gamma, with `degree` Chebyshev
     /// polynomials per family; `regular` adds the family without apex factor; `fixed` replaces
     /// the apex families by fixed exponents.
     pub fn new(
-        ray: Rayleigh<f64>,
-        p: f64,
-        beta: f64,
-        gamma: f64,
+        ray: Rayleigh<T>,
+        p: T,
+        beta: T,
+        gamma: T,
         degree: usize,
         regular: bool,
         fixed: Option<&[f64]>,
     ) -> Self {
-        let m = *ray.m();
-        let ex = crate::apex::exponents(m, beta, gamma);
+        let m = ray.m().clone();
+        let ex = crate::apex::exponents(m, beta.clone(), gamma.clone());
         let mut families: Vec<Family> = if ex.kind == crate::apex::ApexKind::Logarithmic {
             vec![Family::Log]
         } else {
@@ -63,7 +63,7 @@ impl Basis {
         if regular {
             families.push(Family::Regular);
         }
-        let omega = OmegaFn::new(ray.clone(), beta + gamma, beta * gamma);
+        let omega = OmegaFn::new(ray.clone(), beta.clone() + &gamma, beta.clone() * &gamma);
         Basis {
             p,
             beta,
@@ -92,54 +92,73 @@ impl Basis {
         self.degree
     }
     /// Omega(x), eq (31).
-    pub fn omega(&self, x: f64) -> f64 {
-        self.omega.omega(&x)
+    pub fn omega(&self, x: &T) -> T {
+        self.omega.omega(x)
     }
     /// The Rayleigh family of the material.
-    pub fn rayleigh(&self) -> &Rayleigh<f64> {
+    pub fn rayleigh(&self) -> &Rayleigh<T> {
         &self.ray
     }
 
     /// The family weights at v (edge factor times apex factor), given p - v exactly.
-    pub fn weights(&self, v: f64, p_minus_v: f64) -> Vec<f64> {
-        let edge = p_minus_v.powf(-0.5 + self.omega.omega(&v));
+    pub fn weights(&self, v: &T, p_minus_v: &T) -> Vec<T> {
+        let edge = p_minus_v.clone().powf(&(self.omega.omega(v) - 0.5));
         let needs_roots = self.families.iter().any(|f| matches!(f, Family::Root(_)));
         let lams = if needs_roots {
-            crate::apex::local_exponents(&self.ray, self.beta, self.gamma, v)
+            crate::apex::local_exponents(&self.ray, &self.beta, &self.gamma, v)
         } else {
             vec![]
         };
+        let ln_v = v.clone().ln();
         self.families
             .iter()
             .map(|f| match f {
-                Family::Root(j) => edge * v.powf(-1.0 - lams[*j]),
-                Family::Log => edge / v,
-                Family::Regular => edge,
-                Family::Fixed(l) => edge * v.powf(-1.0 - l),
+                Family::Root(j) => {
+                    edge.clone() * (ln_v.clone() * &(-(lams[*j].clone() + 1.0))).exp()
+                }
+                Family::Log => edge.clone() / v,
+                Family::Regular => edge.clone(),
+                Family::Fixed(l) => edge.clone() * (ln_v.clone() * (-(1.0 + l))).exp(),
             })
             .collect()
     }
 
+    /// The Chebyshev argument 2v/p - 1, written through the offset nearer to v so that it is
+    /// accurate at both ends.
+    pub fn cheb_arg(&self, v: &T, p_minus_v: &T) -> T {
+        if *p_minus_v < *v {
+            v.one() - p_minus_v.clone() * 2.0 / &self.p
+        } else {
+            v.clone() * 2.0 / &self.p - 1.0
+        }
+    }
+
     /// All basis functions h_k(v), written into `out` (length [`Self::len`]), given p - v.
-    pub fn eval(&self, v: f64, p_minus_v: f64, out: &mut [f64]) {
+    pub fn eval(&self, v: &T, p_minus_v: &T, out: &mut [T]) {
         let w = self.weights(v, p_minus_v);
-        let t = 2.0 * v / self.p - 1.0;
+        let t = self.cheb_arg(v, p_minus_v);
+        self.fill(&w, &t, out);
+    }
+
+    /// All basis functions from the family weights `w` ([`Self::weights`]) and the Chebyshev
+    /// argument `t` ([`Self::cheb_arg`]) at one point; bases that differ only in the degree
+    /// share the weights.
+    pub fn fill(&self, w: &[T], t: &T, out: &mut [T]) {
         let n = self.degree;
+        let t2 = t.clone() * 2.0;
         for (fi, wf) in w.iter().enumerate() {
             let o = &mut out[fi * n..(fi + 1) * n];
-            let (mut t0, mut t1) = (1.0, t);
+            let (mut t0, mut t1) = (t.one(), t.clone());
             for (k, slot) in o.iter_mut().enumerate() {
-                let tk = if k == 0 {
-                    1.0
-                } else if k == 1 {
-                    t
-                } else {
-                    let t2 = 2.0 * t * t1 - t0;
-                    t0 = t1;
-                    t1 = t2;
-                    t2
+                *slot = match k {
+                    0 => wf.clone(),
+                    1 => wf.clone() * t,
+                    _ => {
+                        let tn = t2.clone() * &t1 - &t0;
+                        t0 = std::mem::replace(&mut t1, tn);
+                        wf.clone() * &t1
+                    }
                 };
-                *slot = wf * tk;
             }
         }
     }

@@ -33,136 +33,201 @@
 //! and a linear function; the s^4 and s^2 terms cancel exactly), so whichever factor is larger
 //! is computed directly and the other as polynomial/factor.
 
-use nalgebra::Complex;
+use complexfn::{Cx, Real};
 
 /// Complex f64.
-pub type C64 = Complex<f64>;
+pub type C64 = Cx<f64>;
 
-/// The half-plane's surface response for speed ratio m = c2/c1 (c1 = 1, mu = 1).
-#[derive(Clone, Copy, Debug)]
-pub struct Lamb {
-    m: f64,
+/// The half-plane's surface response for speed ratio m = c2/c1 (c1 = 1, mu = 1), at the
+/// precision of `m`.
+#[derive(Clone, Debug)]
+pub struct Lamb<T = f64> {
+    m: T,
     /// 1/c2^2
-    b: f64,
+    b: T,
 }
 
 /// The four kernels at one slowness: `[[K_yy, K_yx], [K_xy, K_xx]]`.
-pub type Kernels = [[C64; 2]; 2];
+pub type Kernels<T = f64> = [[Cx<T>; 2]; 2];
 
-impl Lamb {
+impl<T: Real> Lamb<T> {
     /// The response for m = c2/c1 in (0, sqrt(3)/2).
-    pub fn new(m: f64) -> Self {
-        Lamb {
-            m,
-            b: 1.0 / (m * m),
-        }
+    pub fn new(m: T) -> Self {
+        let b = m.clone().sqr().recip();
+        Lamb { m, b }
     }
 
     /// m = c2/c1.
-    pub fn m(&self) -> f64 {
-        self.m
+    pub fn m(&self) -> T {
+        self.m.clone()
     }
 
     /// The kernels K_jk(xi) at a complex slowness xi off the cuts |Re xi| > 1/c_k of the real
     /// axis (units c1 = 1).
-    pub fn kernels(&self, xi: C64) -> Kernels {
-        let one = C64::new(1.0, 0.0);
-        let b = self.b;
-        let s = xi * xi;
-        let a1 = (one - s).sqrt();
-        let a2 = (C64::new(b, 0.0) - s).sqrt();
-        let k = C64::new(b, 0.0) - s * 2.0;
-        let q = s * a1 * a2 * 4.0;
-        let (r_plus, r_minus) = (k * k + q, k * k - q);
+    pub fn kernels(&self, xi: &Cx<T>) -> Kernels<T> {
+        let b = &self.b;
+        let bb = b.clone().sqr();
+        let s = xi.clone() * xi;
+        let a1 = (-s.clone()).add_re(&b.one()).sqrt();
+        let a2 = (-s.clone()).add_re(b).sqrt();
+        let k = (s.clone() * -2.0).add_re(b);
+        let a12 = a1.clone() * &a2;
+        let q = s.clone() * &a12 * 4.0;
+        let kk = k.clone() * &k;
+        let (r_plus, r_minus) = (kk.clone() + &q, kk - &q);
         // R (k^2 - 4 s a1 a2) = b^4 - 8 b^3 s + (24 b^2 - 16 b) s^2 + 16 (1 - b) s^3
-        let cubic = ((s * (16.0 * (1.0 - b)) + (24.0 * b * b - 16.0 * b)) * s - 8.0 * b * b * b)
-            * s
-            + b * b * b * b;
-        let r = if r_plus.norm() >= r_minus.norm() {
+        let c3 = (b.one() - b) * 16.0;
+        let c2 = bb.clone() * 24.0 - b.clone() * 16.0;
+        let c1 = bb.clone() * b * -8.0;
+        let cubic =
+            ((s.clone().scale(&c3).add_re(&c2) * &s).add_re(&c1) * &s).add_re(&bb.clone().sqr());
+        let r = if r_plus.norm_sqr() >= r_minus.norm_sqr() {
             r_plus
         } else {
-            cubic / r_minus
+            cubic / &r_minus
         };
-        let aa = a1 * a2 * 2.0;
-        let (n_minus, n_plus) = (k - aa, k + aa);
+        let aa = a12 * 2.0;
+        let (n_minus, n_plus) = (k.clone() - &aa, k + &aa);
         // (k - 2 a1 a2)(k + 2 a1 a2) = b^2 - 4 b + 4 s
-        let lin = s * 4.0 + (b * b - 4.0 * b);
-        let nyx = if n_minus.norm() >= n_plus.norm() {
+        let lin = (s * 4.0).add_re(&(bb - b.clone() * 4.0));
+        let nyx = if n_minus.norm_sqr() >= n_plus.norm_sqr() {
             n_minus
         } else {
-            lin / n_plus
+            lin / &n_plus
         };
-        let kyy = a1 * b / r;
-        let kxx = a2 * b / r;
-        let kyx = xi * nyx / r;
-        [[kyy, kyx], [-kyx, kxx]]
+        let rinv = r.recip();
+        let kyy = (a1 * &rinv).scale(b);
+        let kxx = (a2 * &rinv).scale(b);
+        let kyx = xi.clone() * &nyx * &rinv;
+        [[kyy, kyx.clone()], [-kyx, kxx]]
     }
 
     /// The displacements (U_y, U_x)(x0) and their slopes (U_y', U_x')(x0) produced by degree-0
     /// tractions whose F-functions are given by `f(z) = [F_y(z), F_x(z)]`, from the contour
     /// representation along z = x0 + i y (module docs). `rel_tol` is the tolerance of the
-    /// tanh-sinh rule in y (mapped by y = Y u/(1 - u), Y = max(|x0|, 0.05)). Returns the values and
-    /// the estimated absolute error.
-    pub fn displacement<F>(&self, x0: f64, rel_tol: f64, mut f: F) -> ([f64; 4], f64)
+    /// nested tanh-sinh rule in y (mapped by y = Y u/(1 - u), Y = max(|x0|, 0.05); step down
+    /// to 2^-8 at 53 bits, one more halving per doubling of the precision). Returns the values
+    /// and the estimated absolute error.
+    pub fn displacement<F>(&self, x0: T, rel_tol: f64, mut f: F) -> ([T; 4], f64)
     where
-        F: FnMut(C64) -> [C64; 2],
+        F: FnMut(Cx<T>) -> [Cx<T>; 2],
     {
-        let scale = x0.abs().max(0.05);
-        let (v, err) = crate::quad::integrate_vec(0.0, 1.0, 4, rel_tol, 1.0 / 512.0, |nd, out| {
-            // y = Y u/(1 - u), dy = Y du/(1 - u)^2
-            let u = nd.v;
-            let one_minus = nd.to_b;
-            let y = scale * nd.from_a / one_minus;
-            let jac = scale / (one_minus * one_minus);
-            if !y.is_finite() || !jac.is_finite() {
-                return;
-            }
-            let _ = u;
-            let z = C64::new(x0, y);
-            let fz = f(z);
-            let kk = self.kernels(z.inv());
+        let prec = x0.prec();
+        let (v, err) = y_integral(&x0, 4, rel_tol, prec, |y, z, jac, out| {
+            let fz = f(z.clone());
+            let kk = self.kernels(&z.clone().recip());
+            let zi = z.clone().recip();
             for j in 0..2 {
-                let g = (kk[j][0] * fz[0] + kk[j][1] * fz[1]) / z;
-                out[j] = (g * y).im * jac / std::f64::consts::PI;
-                out[2 + j] = g.re * jac / std::f64::consts::PI;
+                let g = (kk[j][0].clone() * &fz[0] + kk[j][1].clone() * &fz[1]) * &zi;
+                out[j] = g.im.clone() * y * jac;
+                out[2 + j] = g.re * jac;
             }
         });
-        ([v[0], v[1], v[2], v[3]], err)
+        let mut it = v.into_iter();
+        let mut next = || it.next().unwrap_or_else(|| x0.zero());
+        ([next(), next(), next(), next()], err)
     }
+}
+
+/// Smallest step of the nested tanh-sinh rule of the contour integrals at `bits` of precision:
+/// 2^-8 at 53 bits, halved once more for every doubling of the precision (the rule converges
+/// quadratically once resolved, so the number of correct digits doubles per level).
+pub fn contour_h_min(bits: u32) -> f64 {
+    let extra = (f64::from(bits.max(53)) / 53.0).log2().ceil() as i32;
+    0.5_f64.powi(8 + extra)
+}
+
+/// The integral over y in (0, inf) along z = x0 + i y of `g(y, z, jac, out)` (which writes
+/// `dim` real components, already multiplied by the Jacobian `jac`), divided by pi; the
+/// y-variable is mapped by y = Y u/(1 - u), Y = max(|x0|, 0.05), and the u-integral done by
+/// nested tanh-sinh to `rel_tol`.
+pub(crate) fn y_integral<T, G>(
+    x0: &T,
+    dim: usize,
+    rel_tol: f64,
+    prec: u32,
+    mut g: G,
+) -> (Vec<T>, f64)
+where
+    T: Real,
+    G: FnMut(&T, Cx<T>, &T, &mut [T]),
+{
+    let scale = x0.clone().abs().max(x0.lit(0.05));
+    let zero = x0.zero();
+    let one = x0.one();
+    let pi = x0.pi();
+    let (mut vals, err) = crate::quad::integrate_vec(
+        &zero,
+        &one,
+        dim,
+        rel_tol,
+        contour_h_min(prec),
+        crate::quad::t_max(prec),
+        |nd, out| {
+            // y = Y u/(1 - u), dy = Y du/(1 - u)^2
+            let one_minus = &nd.to_b;
+            let y = scale.clone() * &nd.from_a / one_minus;
+            let jac = scale.clone() / one_minus.clone().sqr();
+            if !y.is_finite() || !jac.is_finite() || y == 0.0 {
+                return;
+            }
+            let z = Cx::new(x0.clone(), y.clone());
+            g(&y, z, &jac, out);
+        },
+    );
+    vals.iter_mut().for_each(|v| *v /= &pi);
+    let err = err / pi.to_f64();
+    (vals, err)
 }
 
 /// F(z) = Int S(w)/(w - z)^2 dw for a point traction S(w) = delta(w) (that is, a line load
 /// P t delta(x) growing linearly in time): F = 1/z^2.
-pub fn point_load(z: C64) -> C64 {
-    (z * z).inv()
+pub fn point_load<T: Real>(z: Cx<T>) -> Cx<T> {
+    (z.clone() * &z).recip()
 }
 
 /// F(z) for a uniform traction S(w) = 1 on |w| < p: F = [-1/(w - z)]_{-p}^{p} = -2p/(p^2 - z^2).
-pub fn uniform_load(p: f64, z: C64) -> C64 {
-    C64::new(-2.0 * p, 0.0) / (C64::new(p * p, 0.0) - z * z)
+pub fn uniform_load<T: Real>(p: T, z: Cx<T>) -> Cx<T> {
+    let d = (-(z.clone() * &z)).add_re(&p.clone().sqr());
+    Cx::real(p * -2.0) / &d
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn direct<T: Real>(l: &Lamb<T>, xi: &Cx<T>) -> (Cx<T>, Cx<T>) {
+        let one = xi.re.one();
+        let s = xi.clone() * xi;
+        let a1 = (-s.clone()).add_re(&one).sqrt();
+        let a2 = (-s.clone()).add_re(&l.b).sqrt();
+        let k = (s.clone() * -2.0).add_re(&l.b);
+        let r = k.clone() * &k + s * &a1 * &a2 * 4.0;
+        let kyx = xi.clone() * &(k - a1.clone() * &a2 * 2.0) / &r;
+        let kyy = (a1 / &r).scale(&l.b);
+        (kyy, kyx)
+    }
+
     #[test]
     fn cancellation_free_forms_agree_with_the_direct_ones() {
         let l = Lamb::new(0.5345);
-        for xi in [
-            C64::new(0.3, -0.2),
-            C64::new(1.5, -0.4),
-            C64::new(-0.2, -2.0),
-        ] {
-            let kk = l.kernels(xi);
-            let s = xi * xi;
-            let a1 = (C64::new(1.0, 0.0) - s).sqrt();
-            let a2 = (C64::new(l.b, 0.0) - s).sqrt();
-            let k = C64::new(l.b, 0.0) - s * 2.0;
-            let r = k * k + s * a1 * a2 * 4.0;
-            let kyx = xi * (k - a1 * a2 * 2.0) / r;
-            assert!((kk[0][1] - kyx).norm() < 1e-12 * kyx.norm());
-            assert!((kk[0][0] - a1 * l.b / r).norm() < 1e-12 * kk[0][0].norm());
+        for (re, im) in [(0.3, -0.2), (1.5, -0.4), (-0.2, -2.0)] {
+            let xi = C64::new(re, im);
+            let kk = l.kernels(&xi);
+            let (kyy, kyx) = direct(&l, &xi);
+            assert!((kk[0][1].clone() - &kyx).abs() < 1e-12 * kyx.abs());
+            assert!((kk[0][0].clone() - &kyy).abs() < 1e-12 * kyy.abs());
+        }
+        // the same at 192 bits, to a tolerance far below f64's
+        let like = rug::Float::with_val(192, 0);
+        let l = Lamb::new(like.lit(0.5345));
+        for (re, im) in [(0.3, -0.2), (1.5, -0.4), (-0.2, -2.0)] {
+            let xi = Cx::lit(&like, re, im);
+            let kk = l.kernels(&xi);
+            let (kyy, kyx) = direct(&l, &xi);
+            let e1 = ((kk[0][1].clone() - &kyx).abs() / kyx.abs()).to_f64();
+            let e2 = ((kk[0][0].clone() - &kyy).abs() / kyy.abs()).to_f64();
+            assert!(e1 < 1e-50 && e2 < 1e-50, "{e1:e} {e2:e}");
         }
     }
 }

@@ -3,6 +3,8 @@
 //! * [`kernels`]: Lamb's self-similar surface response and its contour representation;
 //! * [`apex`]: the Mellin eigen-equation at the apex and its exponents;
 //! * [`basis`]: the spectral basis carrying the edge and apex exponents;
+//! * [`quad`]: the quadrature rules (fixed-step, exact endpoint offsets, any precision);
+//! * [`lsq`]: least squares by Householder QR with column pivoting, any precision;
 //! * [`solver`]: the singular integral equation, its collocation solve and the solved case
 //!   [`GenuineCase`].
 #![warn(missing_docs)]
@@ -11,10 +13,11 @@ pub mod apex;
 pub mod basis;
 pub mod error;
 pub mod kernels;
+pub mod lsq;
 pub mod quad;
 pub mod solver;
 
 pub use apex::{ApexExponents, ApexKind};
 pub use error::{GenuineError, Result};
 pub use kernels::Lamb;
-pub use solver::{load_through_kernels, GenuineCase, SolveOptions};
+pub use solver::{load_through_kernels, roundoff_floor, GenuineCase, SolveOptions};

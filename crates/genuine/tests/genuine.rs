@@ -193,3 +193,34 @@ fn bad_parameters_are_refused_with_their_range() {
     let g = GenuineCase::solve(&mat, &ind, 0.3, opts(8)).unwrap();
     assert!(g.stress_hat(0.31).is_err() && g.slip_rate(0.0).is_err());
 }
+
+/// Signorini outside the contact: for gamma = 0 the genuine gap, from Lamb's kernels, equals
+/// the paper's gap from (18) (an independent representation); for gamma > 0 it is positive.
+#[test]
+fn normal_gap_outside_the_contact_matches_the_paper_and_is_open() {
+    let mat = Material::paper();
+    for (th, cp) in [(89.0, Coupling::On), (86.0, Coupling::Off)] {
+        let ind = Indenter::new(th, 0.0, cp).unwrap();
+        let p = 0.3;
+        let paper = Case::<f64>::new(&mat, &ind, p, Solution::Paper).unwrap();
+        let g = GenuineCase::solve(&mat, &ind, p, SolveOptions::default()).unwrap();
+        for x in [0.31, 0.4, 0.6, 0.9] {
+            let (gg, err) = g.normal_gap(x).unwrap();
+            let gp = paper.normal_gap(&x).unwrap();
+            assert!(
+                (gg - gp).abs() <= err && err < 1e-9,
+                "Theta {th} {cp:?} x {x}: genuine {gg}, paper {gp}"
+            );
+            assert!(gg > 0.0, "gap closed at {x}: {gg}");
+        }
+        assert!(g.no_interpenetration().unwrap().0);
+    }
+    let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
+    let g = GenuineCase::solve(&mat, &ind, 0.3, SolveOptions::default()).unwrap();
+    let (ok, min_gap) = g.no_interpenetration().unwrap();
+    assert!(ok && min_gap > 0.0, "min gap {min_gap}");
+    assert!(
+        g.normal_gap(0.2).is_err(),
+        "x inside the contact is refused"
+    );
+}

@@ -14,7 +14,7 @@ fn nu(m: f64) -> f64 {
 fn supersonic_uniform_load_reproduces_the_plane_wave_field() {
     let lamb = Lamb::new(M);
     let big_p = 1.6;
-    let k = lamb.kernels(C64::new(1.0 / big_p, 0.0));
+    let k = lamb.kernels(&C64::new(1.0 / big_p, 0.0));
     for &x0 in &[1.05, 1.2, 1.45] {
         // normal pressure S_y = -1
         let (u, _) =
@@ -58,7 +58,7 @@ fn supersonic_uniform_load_reproduces_the_plane_wave_field() {
     });
     assert!(u[0].abs() < 1e-13 && u[1].abs() < 1e-13, "{u:?}");
     // the one-dimensional limit: K_yy(0) sigma = -m^2 (c2^2/c1 per unit pressure)
-    let k0 = lamb.kernels(C64::new(0.0, 0.0));
+    let k0 = lamb.kernels(&C64::new(0.0, 0.0));
     assert!((k0[0][0].re - M * M).abs() < 1e-15);
 }
 
@@ -121,8 +121,8 @@ fn reciprocity() {
         C64::new(-1.2, -3.0),
         C64::new(0.5, 0.0),
     ] {
-        let k = lamb.kernels(xi);
-        assert!((k[0][1] + k[1][0]).norm() < 1e-15 * k[0][1].norm());
+        let k = lamb.kernels(&xi);
+        assert!((k[0][1].clone() + &k[1][0]).abs() < 1e-15 * k[0][1].abs());
     }
     for &x0 in &[0.05, 0.3, 0.52, 0.8, 1.3] {
         let (a, _) = lamb.displacement(x0, 1e-14, |z| [point_load(z), C64::new(0.0, 0.0)]);
