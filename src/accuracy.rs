@@ -35,7 +35,7 @@ pub const QUANTITIES: [&str; 8] = [
 /// One line of the report.
 #[derive(Clone, Debug)]
 pub struct Row {
-    /// "f64" or "<bits> bits".
+    /// "f64" or "`<bits>` bits".
     pub precision: String,
     /// Mantissa bits.
     pub bits: u32,

@@ -10,7 +10,7 @@
 use rayon::prelude::*;
 use wedge::{ApexRegime, Case, Coupling, Indenter, Solution};
 
-use super::contour::{as_polyline, Grid};
+use super::contour::{as_polyline, Grid, Segment};
 use super::output::{Column, Table};
 use super::paper::{genuine_exponent, genuine_kind_name, material_line, write};
 use super::plot::{Axis, Cell, Dash, Legend, Note, Page, Panel, Rgb, Series};
@@ -190,21 +190,10 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
         }
         *first = false;
         panel.series.push(s);
-        // label at the middle of the contour (segments ordered by Theta)
-        segs.sort_by(|a, b| (a.0 .0 + a.1 .0).total_cmp(&(b.0 .0 + b.1 .0)));
-        let ((xa, ya), (xb, yb)) = segs[segs.len() / 2];
-        panel.notes.push(Note {
-            at: ((xa + xb) / 2.0, (ya + yb) / 2.0),
-            text: format!("{level:+.2}"),
-            color: (60, 60, 60),
-            size: 14,
-        });
+        label_contour(&mut panel, &mut segs, format!("{level:+.2}"));
     }
     // the logarithmic boundary gamma = cot Theta
-    let boundary: Vec<(f64, f64)> = linspace(THETA_RANGE.0, THETA_RANGE.1, 300)
-        .into_iter()
-        .map(|th| (th, 1.0 / th.to_radians().tan()))
-        .collect();
+    let boundary = cot_theta_curve();
     panel.series.insert(
         0,
         Series::new(
@@ -280,20 +269,10 @@ fn genuine_panel(thetas: &[f64], gammas: &[f64], columns: &[Vec<Cellv>]) -> Pane
         }
         first = false;
         panel.series.push(s);
-        segs.sort_by(|a, b| (a.0 .0 + a.1 .0).total_cmp(&(b.0 .0 + b.1 .0)));
-        let ((xa, ya), (xb, yb)) = segs[segs.len() / 2];
-        panel.notes.push(Note {
-            at: ((xa + xb) / 2.0, (ya + yb) / 2.0),
-            text: format!("{level:.2}"),
-            color: (60, 60, 60),
-            size: 14,
-        });
+        label_contour(&mut panel, &mut segs, format!("{level:.2}"));
     }
     // the paper's boundary, for comparison
-    let boundary: Vec<(f64, f64)> = linspace(THETA_RANGE.0, THETA_RANGE.1, 300)
-        .into_iter()
-        .map(|th| (th, 1.0 / th.to_radians().tan()))
-        .collect();
+    let boundary = cot_theta_curve();
     panel.series.insert(
         0,
         Series::new(
@@ -311,4 +290,24 @@ fn genuine_panel(thetas: &[f64], gammas: &[f64], columns: &[Vec<Cellv>]) -> Pane
         size: 17,
     });
     panel
+}
+
+/// The label `text` at the middle of a contour (its segments ordered by Theta).
+fn label_contour(panel: &mut Panel, segs: &mut [Segment], text: String) {
+    segs.sort_by(|a, b| (a.0 .0 + a.1 .0).total_cmp(&(b.0 .0 + b.1 .0)));
+    let ((xa, ya), (xb, yb)) = segs[segs.len() / 2];
+    panel.notes.push(Note {
+        at: ((xa + xb) / 2.0, (ya + yb) / 2.0),
+        text,
+        color: (60, 60, 60),
+        size: 14,
+    });
+}
+
+/// The curve gamma = cot Theta over the Theta range of the map.
+fn cot_theta_curve() -> Vec<(f64, f64)> {
+    linspace(THETA_RANGE.0, THETA_RANGE.1, 300)
+        .into_iter()
+        .map(|th| (th, 1.0 / th.to_radians().tan()))
+        .collect()
 }

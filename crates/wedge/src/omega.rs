@@ -33,6 +33,8 @@
 //! ```
 
 use complexfn::quadrature::{gauss_legendre_rule, CachedRules};
+use std::ops::{Add, Div, Mul, Sub};
+
 use complexfn::{Cx, Rayleigh, Real};
 
 use crate::error::{Result, WedgeError};
@@ -166,20 +168,25 @@ impl<T: Real> OmegaFn<T> {
         arg.atan().scale(&s.re.pi().recip())
     }
 
-    /// The parts of tan(pi Omega) at s = xi^2 in the form used by [`Self::divided_difference`].
-    pub(crate) fn tan_form(&self, s: &T) -> TanForm<T> {
-        let one = s.one();
+    /// The parts of tan(pi Omega) at s = xi^2 (real on the cut, or complex near it) in the
+    /// form used by [`Self::divided_difference`].
+    pub(crate) fn tan_form<F: Field<T>>(&self, s: &F) -> TanForm<F> {
         let inv_m2 = self.ray.m2().clone().recip();
-        let r1 = (one.clone() - s).sqrt();
-        let r2 = (one.clone() - s.clone() * &inv_m2).sqrt();
+        // 1 - c s
+        let one_minus = |c: &T| s.clone().rmul(c) * -1.0 + 1.0;
+        let r1 = one_minus(&inv_m2.one()).sqrt_f();
+        let r2 = one_minus(&inv_m2).sqrt_f();
         let w = r1.clone() * &r2;
-        let k = one.clone() * 2.0 - s.clone() * &inv_m2;
+        let k = one_minus(&inv_m2) + 1.0;
         let q = w.clone() * (k.clone() + w.clone() * 2.0);
         // P = 4 + s (1/m^4 - 4/m^2)
-        let pp = (inv_m2.clone().sqr() - inv_m2.clone() * 4.0) * s + 4.0;
+        let pp = s
+            .clone()
+            .rmul(&(inv_m2.clone().sqr() - inv_m2.clone() * 4.0))
+            + 4.0;
         let n = pp.clone() / &q;
-        let d = r2.clone().recip() - self.beta_gamma.clone() * r1.clone().recip();
-        let a = self.ray.m2().clone() * &self.beta_plus_gamma * &n / &d;
+        let d = r2.clone().recip_f() - r1.clone().recip_f().rmul(&self.beta_gamma);
+        let a = (n.clone() / &d).rmul(&(self.ray.m2().clone() * &self.beta_plus_gamma));
         TanForm {
             s: s.clone(),
             r1,
@@ -194,8 +201,9 @@ impl<T: Real> OmegaFn<T> {
         }
     }
 
-    /// The divided difference (Omega(sqrt u) - Omega(sqrt s))/(u - s) for 0 <= u, s < m^2,
-    /// free of cancellation however close u is to s (the limit u = s is Omega'(s)).
+    /// The divided difference (Omega(sqrt u) - Omega(sqrt s))/(u - s) for u, s in [0, m^2)
+    /// or complex near it, free of cancellation however close u is to s (the limit u = s is
+    /// Omega'(s)).
     ///
     /// With A = tan(pi Omega) = m^2 (beta + gamma) N/D, N = -L/s = P/(w (K + 2 w)),
     /// P = 4 + s (1/m^4 - 4/m^2) (from K^2 - 4 w^2 = s P), w = r1 r2, r_k = (1 - s/m_k^2)^(1/2),
@@ -206,25 +214,35 @@ impl<T: Real> OmegaFn<T> {
     ///   w_u^2 - w_s^2 = (u - s)((u + s)/m^2 - 1 - 1/m^2),   1/r_u - 1/r_s = (u - s)/(m_k^2 r_u r_s (r_u + r_s)),
     /// ```
     ///
-    /// and pi (Omega_u - Omega_s) = atan((A_u - A_s)/(1 + A_u A_s)) (A_u A_s >= 0 on the cut).
-    pub(crate) fn divided_difference(&self, u: &TanForm<T>, s: &TanForm<T>) -> T {
-        let one = s.s.one();
+    /// and pi (Omega_u - Omega_s) = atan((A_u - A_s)/(1 + A_u A_s)) (A_u A_s >= 0 on the cut,
+    /// so no branch of the arctangent is crossed near it).
+    pub(crate) fn divided_difference<F: Field<T>>(&self, u: &TanForm<F>, s: &TanForm<F>) -> F {
         let inv_m2 = self.ray.m2().clone().recip();
-        let dw2 = (u.s.clone() + &s.s) * &inv_m2 - 1.0 - &inv_m2;
-        let dw = dw2.clone() / (u.w.clone() + &s.w);
+        let one = inv_m2.one();
+        let dw2 = (u.s.clone() + &s.s)
+            .rmul(&inv_m2)
+            .radd(&-(one.clone() + &inv_m2));
+        let dw = dw2.clone() / &(u.w.clone() + &s.w);
         // Q = w K + 2 w^2: Q_u - Q_s = (u - s) dq
-        let dq = dw * &u.k - s.w.clone() * &inv_m2 + dw2 * 2.0;
+        let dq = dw * &u.k - s.w.clone().rmul(&inv_m2) + dw2 * 2.0;
         let dp = inv_m2.clone().sqr() - inv_m2.clone() * 4.0;
-        let dn = (dp * &s.q - s.pp.clone() * dq) / (u.q.clone() * &s.q);
-        let dinv =
-            |ru: &T, rs: &T, inv_mk2: &T| inv_mk2.clone() / (ru.clone() * rs * (ru.clone() + rs));
-        let dd = dinv(&u.r2, &s.r2, &inv_m2) - self.beta_gamma.clone() * dinv(&u.r1, &s.r1, &one);
-        let da = self.ray.m2().clone() * &self.beta_plus_gamma * (dn * &s.d - s.n.clone() * dd)
-            / (u.d.clone() * &s.d);
-        let y = da / (u.a.clone() * &s.a + 1.0);
-        let z = y.clone() * (u.s.clone() - &s.s);
-        let atan_ratio = if z == 0.0 { one } else { z.clone().atan() / z };
-        y * atan_ratio / s.s.pi()
+        let dn = (s.q.clone().rmul(&dp) - s.pp.clone() * &dq) / &(u.q.clone() * &s.q);
+        let dinv = |ru: &F, rs: &F, inv_mk2: &T| {
+            (ru.clone() * rs * &(ru.clone() + rs))
+                .recip_f()
+                .rmul(inv_mk2)
+        };
+        let dd = dinv(&u.r2, &s.r2, &inv_m2) - dinv(&u.r1, &s.r1, &one).rmul(&self.beta_gamma);
+        let da = ((dn * &s.d - s.n.clone() * &dd) / &(u.d.clone() * &s.d))
+            .rmul(&(self.ray.m2().clone() * &self.beta_plus_gamma));
+        let y = da / &(u.a.clone() * &s.a + 1.0);
+        let z = y.clone() * &(u.s.clone() - &s.s);
+        let atan_ratio = if z.is_zero_f() {
+            z.clone() * 0.0 + 1.0
+        } else {
+            z.clone().atan_f() / &z
+        };
+        (y * &atan_ratio).rmul(&one.pi().recip())
     }
 
     /// Omega continued analytically to complex s = zeta^2 (agrees with [`Self::omega`] for
@@ -243,7 +261,99 @@ impl<T: Real> OmegaFn<T> {
     }
 }
 
-/// tan(pi Omega) and its parts at one s = xi^2 on the cut (see [`OmegaFn::divided_difference`]).
+/// The arithmetic that [`TanForm`] and [`OmegaFn::divided_difference`] need, shared by real
+/// s on the cut and complex s near it (one formula for both).
+pub(crate) trait Field<T: Real>:
+    Clone
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+    + Add<f64, Output = Self>
+    + Sub<f64, Output = Self>
+    + Mul<f64, Output = Self>
+{
+    /// Times a real.
+    fn rmul(self, r: &T) -> Self;
+    /// Plus a real.
+    fn radd(self, r: &T) -> Self;
+    /// Principal square root.
+    fn sqrt_f(self) -> Self;
+    /// 1/self.
+    fn recip_f(self) -> Self;
+    /// Principal arctangent.
+    fn atan_f(self) -> Self;
+    /// Exactly zero.
+    fn is_zero_f(&self) -> bool;
+}
+
+impl<T: Real> Field<T> for T {
+    fn rmul(self, r: &T) -> Self {
+        self * r
+    }
+    fn radd(self, r: &T) -> Self {
+        self + r
+    }
+    fn sqrt_f(self) -> Self {
+        self.sqrt()
+    }
+    fn recip_f(self) -> Self {
+        self.recip()
+    }
+    fn atan_f(self) -> Self {
+        self.atan()
+    }
+    fn is_zero_f(&self) -> bool {
+        *self == 0.0
+    }
+}
+
+impl<T: Real> Field<T> for Cx<T> {
+    fn rmul(self, r: &T) -> Self {
+        self.scale(r)
+    }
+    fn radd(self, r: &T) -> Self {
+        self.add_re(r)
+    }
+    fn sqrt_f(self) -> Self {
+        self.sqrt()
+    }
+    fn recip_f(self) -> Self {
+        self.recip()
+    }
+    fn atan_f(self) -> Self {
+        self.atan()
+    }
+    fn is_zero_f(&self) -> bool {
+        self.re == 0.0 && self.im == 0.0
+    }
+}
+
+impl<T: Real> TanForm<T> {
+    /// The same parts as complex numbers.
+    fn complex(&self) -> TanForm<Cx<T>> {
+        let c = |x: &T| Cx::real(x.clone());
+        TanForm {
+            s: c(&self.s),
+            r1: c(&self.r1),
+            r2: c(&self.r2),
+            w: c(&self.w),
+            k: c(&self.k),
+            q: c(&self.q),
+            pp: c(&self.pp),
+            n: c(&self.n),
+            d: c(&self.d),
+            a: c(&self.a),
+        }
+    }
+}
+
+/// tan(pi Omega) and its parts at one s = xi^2 on the cut or near it (see
+/// [`OmegaFn::divided_difference`]).
 #[derive(Clone, Debug)]
 pub(crate) struct TanForm<T> {
     s: T,
@@ -396,7 +506,7 @@ impl<T: Real> InnerRule<T> {
     /// Each term is w_j (omega(u_j) - omega(s))/(u_j - s). Where |u_j - s| < w_j (the node
     /// spacing), the rounding of the two values of omega would be amplified by w_j/|u_j - s|
     /// (up to 1e-10 in f64 without care); there the divided difference is formed without
-    /// cancellation ([`OmegaFn::divided_difference`]), so every term keeps the working
+    /// cancellation (`OmegaFn::divided_difference`), so every term keeps the working
     /// precision.
     pub fn b_with(&self, omega: &OmegaFn<T>, s: &T, om_s: &T) -> T {
         let mut acc = s.zero();
@@ -460,9 +570,18 @@ impl<T: Real> InnerRule<T> {
         if a < limit {
             let om_s = omega.omega_rel(&s);
             let mut acc = Cx::real(s.re.zero());
-            for (u, w, om) in &self.nodes {
-                let num = (-om_s.clone()).add_re(om).scale(w);
+            let mut s_form: Option<TanForm<Cx<T>>> = None;
+            for (j, (u, w, om)) in self.nodes.iter().enumerate() {
                 let den = (-s.clone()).add_re(u);
+                if den.abs() < *w && !self.forms.is_empty() {
+                    // next to a node: the divided difference without cancellation (as in b)
+                    let sf = s_form.get_or_insert_with(|| omega.tan_form(&s));
+                    acc += omega
+                        .divided_difference(&self.forms[j].complex(), sf)
+                        .scale(w);
+                    continue;
+                }
+                let num = (-om_s.clone()).add_re(om).scale(w);
                 acc += num / &den;
             }
             let log = (-s.clone()).add_re(&self.p2).ln() - (-s).ln();
@@ -556,6 +675,29 @@ mod tests {
                 // absolute: the terms of the sum are O(1), b itself may be small
                 let err = (got - exact.to_f64()).abs();
                 assert!(err < 1e-14, "xi {xi}: {got} vs {exact}");
+            }
+        }
+    }
+
+    #[test]
+    fn lambda0_keeps_full_precision_next_to_the_segment() {
+        // zeta^2 within 1e-14 .. 1e-4 of every node of the f64 rule (the field near the
+        // contact surface), against 256 bits
+        let p = 0.3;
+        let small = omega_fn(&0.0_f64, -0.0175, 0.6);
+        let big = omega_fn(&Float::with_val(256, 0), -0.0175, 0.6);
+        let rule = InnerRule::new(&small, &p).unwrap();
+        let rule_b = InnerRule::new(&big, &Float::with_val(256, p)).unwrap();
+        for (u, _, _) in &rule.nodes {
+            for dy in [1e-14, 1e-10, 1e-7, 1e-4] {
+                for dx in [0.0, 1e-12] {
+                    let z = Cx::new(u + dx, dy).sqrt();
+                    let got = rule.lambda0(&small, &z);
+                    let zb = Cx::new(Float::with_val(256, z.re), Float::with_val(256, z.im));
+                    let exact = rule_b.lambda0(&big, &zb);
+                    let err = (got.re - exact.re.to_f64()).hypot(got.im - exact.im.to_f64());
+                    assert!(err < 2e-15, "s = {u} + {dx} + i {dy}: error {err:e}");
+                }
             }
         }
     }
