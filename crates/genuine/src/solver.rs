@@ -83,10 +83,6 @@ pub fn v_rule_s_max(bits: u32) -> f64 {
     (f64::from(bits) + 8.0) * std::f64::consts::LN_2
 }
 
-/// Relative floor (to V_hat, in f64; scaled like [`roundoff_floor`] with the precision) of
-/// the error of [`GenuineCase::normal_gap`].
-pub const GAP_FLOOR: f64 = 1e-9;
-
 /// Sample points of the gap check on (p, 1) ([`GenuineCase::no_interpenetration`]).
 pub const GAP_SAMPLES: usize = 12;
 
@@ -755,10 +751,11 @@ impl<T: CachedRules> GenuineCase<T> {
         let samples = if x0 < prob.p {
             prob.contour_samples(&self.fit.basis, &x0, h)
         } else {
-            // the v-rule split at p: everything on (0, p)
-            let mut s = prob.contour_samples(&self.fit.basis, &prob.p, h);
-            s.retain(|x| x.pv > 0.0);
-            s
+            // Outside the contact the v-integrand has no singularity at x0; the rule is split
+            // at p/2, so that the edge singularity h ~ (p - v)^(-1/2 + Omega) keeps the
+            // double-exponential end of the rule (a split at p would put the truncated
+            // single-exponential end there and lose about delta^(1/2), 1e-10 in f64).
+            prob.contour_samples(&self.fit.basis, &(prob.p.clone() / 2.0), h)
         };
         let hw = prob.weighted_slopes(&self.fit.basis, &samples, &self.fit.coef);
         Ok(prob.contour(&samples, &hw, &x0, self.opts.contour_tol))
@@ -804,8 +801,9 @@ impl<T: CachedRules> GenuineCase<T> {
 
     /// The normal gap outside the contact, g(x) = -V_hat + x - (U_y + beta U_x) at x0 > p (over
     /// c1 t cot Theta; the wedge crate's `Case::normal_gap` for the paper's construction),
-    /// with its estimated absolute error (quadrature estimate plus the floor [`GAP_FLOOR`]).
-    /// g(p) = 0 by (7).
+    /// with its estimated absolute error (the contour quadrature's estimate, the change
+    /// between the contour steps h and h/2, and the round-off floor times V_hat). g(p) = 0
+    /// by (7).
     pub fn normal_gap(&self, x0: T) -> Result<(T, f64)> {
         let p = &self.prob.p;
         if !(x0 > *p && x0.is_finite()) {
@@ -815,18 +813,21 @@ impl<T: CachedRules> GenuineCase<T> {
                 format!("(p, inf) = ({}, inf)", p.to_f64()),
             ));
         }
-        // Outside the contact the displacement is less accurate than on it: against the
-        // paper's gap from (18) (gamma = 0) the f64 gap next to the edge (x = 1.03 p) is off
-        // by 5e-11 while the contour quadrature states 4e-16, and neither a finer contour
-        // step, a tighter contour tolerance nor a larger basis changes that. Until its
-        // source is found, the error carries a floor of 1e-9 V_hat (scaled with the
-        // precision), which covers what was measured.
-        let (u, err) = self.displacement(x0.clone())?;
-        let [uy, ux, _, _] = u;
-        let gap = x0 - &self.fit.v_hat - uy - self.prob.beta.clone() * ux;
-        let floor = GAP_FLOOR * roundoff_floor(self.prob.prec) / ROUNDOFF_FLOOR
-            * self.fit.v_hat.to_f64().abs();
-        Ok((gap, err * (1.0 + self.prob.beta.to_f64().abs()) + floor))
+        // Just outside the edge the kernels' pole at x0 sits next to the end p of the
+        // v-rule: the gap is taken with the contour step halved, and the change from the
+        // default step is added to its error estimate.
+        let h = self.opts.h_tanh;
+        let gap_at = |h: f64| -> Result<(T, f64)> {
+            let (u, err) = self.displacement_with_step(x0.clone(), h)?;
+            let [uy, ux, _, _] = u;
+            let gap = x0.clone() - &self.fit.v_hat - uy - self.prob.beta.clone() * ux;
+            Ok((gap, err * (1.0 + self.prob.beta.to_f64().abs())))
+        };
+        let (fine, err) = gap_at(h / 2.0)?;
+        let (coarse, _) = gap_at(h)?;
+        let change = (fine.clone() - coarse).abs().to_f64();
+        let floor = roundoff_floor(self.prob.prec) * self.fit.v_hat.to_f64().abs();
+        Ok((fine, err + change + floor))
     }
 
     /// Signorini outside the contact: the smallest normal gap at [`GAP_SAMPLES`] points of
