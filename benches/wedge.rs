@@ -1,6 +1,7 @@
 //! Benchmarks: the Rayleigh root, Omega0 with S0 (a case build), a 100-point contact-stress
 //! profile, one full solve (Q, V) with friction and coupling, an alpha-V curve and the inverse
-//! alpha(V), each in f64 and at 30 and 100 digits.
+//! alpha(V), each in f64 and at 30 and 100 digits; and one genuine solve (two basis sizes) in
+//! f64.
 //!
 //! Run: `cargo bench --bench wedge`. The 200-point curve is benchmarked in f64 and at 30
 //! digits; at 100 digits a 10-point curve stands for it (per point it costs one full solve).
@@ -200,10 +201,30 @@ fn bench_inverse(c: &mut Criterion) {
     g.finish();
 }
 
+fn bench_genuine(c: &mut Criterion) {
+    let mut g = c.benchmark_group("genuine_solve");
+    g.sample_size(10);
+    let mat = Material::paper();
+    let ind = indenter();
+    g.bench_function("f64", |b| {
+        b.iter(|| {
+            genuine::GenuineCase::solve(
+                &mat,
+                &ind,
+                black_box(0.3),
+                genuine::SolveOptions::default(),
+            )
+            .unwrap()
+            .v_hat()
+        })
+    });
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     // no plots: the figures' plotters build carries no system font for criterion's charts
     config = Criterion::default().without_plots();
-    targets = bench_rayleigh, bench_case_build, bench_stress_profile, bench_full_solve, bench_curve, bench_inverse
+    targets = bench_rayleigh, bench_case_build, bench_stress_profile, bench_full_solve, bench_curve, bench_inverse, bench_genuine
 }
 criterion_main!(benches);
