@@ -284,7 +284,7 @@ pub fn genuine_report<T: CachedRules>(
     let c1 = input.material.c1().to_real(&like);
     let cot = input.indenter.cot_theta(&like);
     let ray = complexfn::Rayleigh::new(input.material.m(&like))?;
-    let (apex, amp) = g.apex();
+    let (apex, amp) = g.apex().map_err(solver_err)?;
     let mut o = Map::new();
     for k in SOLVE_KEYS {
         o.insert((*k).into(), Value::Null);

@@ -344,7 +344,7 @@ fn check_stress(name: &str, theta: f64) {
         // the genuine rows: stress and apex exponent from the genuine solver
         let g =
             genuine::GenuineCase::solve(&mat, &ind, 0.3, genuine::SolveOptions::default()).unwrap();
-        let (ex, amp) = g.apex();
+        let (ex, amp) = g.apex().unwrap();
         let lambda = ex.lambdas.iter().copied().fold(0.0_f64, f64::max);
         for row in csv.some(|r| num(r, "gamma") == gamma && text(r, "solution") == "genuine") {
             let x = num(row, "r_over_c1_t");

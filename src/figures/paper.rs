@@ -574,7 +574,10 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         .par_iter()
         .map(|&g| genuine_case(&mat, &Indenter::new(theta, g, Coupling::On)?, p))
         .collect::<Result<_>>()?;
-    let gapex: Vec<(genuine::ApexExponents, f64)> = gcases.iter().map(|g| g.apex()).collect();
+    let gapex: Vec<(genuine::ApexExponents, f64)> = gcases
+        .iter()
+        .map(|g| g.apex())
+        .collect::<std::result::Result<_, _>>()?;
     let along = contact_fractions(ctx.points(200, 8));
     let near = logspace(1e-6, 1e-1, ctx.points(51, 6));
     let jobs: Vec<(usize, bool, bool, f64)> = (0..cases.len())

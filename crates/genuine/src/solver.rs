@@ -862,8 +862,9 @@ impl<T: CachedRules> GenuineCase<T> {
 
     /// The apex exponents (eigen-equation roots) and the leading amplitude A of
     /// S ~ A x^(-lambda_max) (for the logarithmic case S ~ A ln x; for a finite apex the
-    /// limit S(0+), estimated from S at x = 1e-8 p).
-    pub fn apex(&self) -> (crate::apex::ApexExponents<T>, T) {
+    /// limit S(0+), estimated from S at x = 1e-8 p; an error of that stress evaluation is
+    /// returned).
+    pub fn apex(&self) -> Result<(crate::apex::ApexExponents<T>, T)> {
         let prob = &self.prob;
         let ex =
             crate::apex::exponents(prob.ray.m().clone(), prob.beta.clone(), prob.gamma.clone());
@@ -883,11 +884,9 @@ impl<T: CachedRules> GenuineCase<T> {
         let amp = match ex.kind {
             crate::apex::ApexKind::Power => -(c / &ex.lambdas[0]),
             crate::apex::ApexKind::Logarithmic => c,
-            crate::apex::ApexKind::Finite => self
-                .stress_hat(p.clone() * 1e-8)
-                .unwrap_or_else(|_| p.lit(f64::NAN)),
+            crate::apex::ApexKind::Finite => self.stress_hat(p.clone() * 1e-8)?,
         };
-        (ex, amp)
+        Ok((ex, amp))
     }
 
     /// The contact speed p whose genuine V/(c1 cot Theta) equals `v_hat`, searched in

@@ -110,7 +110,7 @@ fn apex_exponent_is_the_eigen_equation_root() {
     let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
     let p = 0.3;
     let g = GenuineCase::solve(&mat, &ind, p, opts(16)).unwrap();
-    let (ex, amp) = g.apex();
+    let (ex, amp) = g.apex().unwrap();
     assert_eq!(ex.kind, ApexKind::Power);
     let lam = ex.lambdas[0];
     // the root satisfies t^2 - m^2 (beta + gamma) t + beta gamma = 0
