@@ -124,8 +124,8 @@ impl SolveOptions {
     /// * `contour_tol = 2^-(bits - 7)`;
     /// * `degree = 24 + 20 (bits - 53)/75`, even (the spectral error falls geometrically, by
     ///   about one decade per unit of degree, so the degree grows linearly with the number of
-    ///   digits wanted; the estimate |V(N) - V(N/2)| measures the coarse solve and stays far
-    ///   above the error of the fine one);
+    ///   digits wanted; [`GenuineCase::error_estimate`] says how the error is estimated from
+    ///   coarser sizes);
     /// * oversampling 2 up to 64 bits, 1.5 beyond (the rows are then exact to many more
     ///   digits than the discretisation needs).
     ///
@@ -186,6 +186,8 @@ pub struct GenuineCase<T = f64> {
     prob: Problem<T>,
     fit: Fit<T>,
     coarse_v_hat: T,
+    /// V_hat at degree 3N/4 (above f64 only).
+    middle_v_hat: Option<T>,
     opts: SolveOptions,
 }
 
@@ -594,25 +596,41 @@ impl<T: CachedRules> GenuineCase<T> {
         }
         let prob = Problem::new(material, indenter, p)?;
         let basis = prob.basis(opts.degree, &opts);
-        let coarse_basis = prob.basis(opts.degree / 2, &opts);
+        // the coarser sizes of the error estimate: N/2, and above f64 also 3N/4 (see
+        // [`GenuineCase::error_estimate`])
+        let mut sizes = vec![opts.degree / 2];
+        if prob.prec > 64 {
+            sizes.push(3 * opts.degree / 4 / 2 * 2);
+        }
         let rows = prob.row_samples(&basis, opts.h_quad);
         let xs = prob.p.clone() * NORMALISATION_POINT;
         let cont = prob.contour_samples(&basis, &xs, opts.h_tanh);
         let (mut coef, residual) = prob.fit(&basis, &rows, &opts)?;
-        let (mut coarse, _) = prob.fit(&coarse_basis, &rows, &opts)?;
-        let hw = prob.weighted_slopes(&basis, &cont, &coef);
-        let hw_coarse = prob.weighted_slopes(&coarse_basis, &cont, &coarse);
-        let (mut u, _) = prob.contour_many(&cont, &[&hw, &hw_coarse], &xs, opts.contour_tol);
-        let u_coarse = u.pop().ok_or_else(|| GenuineError::NoConvergence {
+        let mut fits = Vec::with_capacity(sizes.len());
+        for &n in &sizes {
+            let b = prob.basis(n, &opts);
+            let (c, _) = prob.fit(&b, &rows, &opts)?;
+            fits.push((b, c));
+        }
+        let mut hws = vec![prob.weighted_slopes(&basis, &cont, &coef)];
+        for (b, c) in &fits {
+            hws.push(prob.weighted_slopes(b, &cont, c));
+        }
+        let loads: Vec<&[T]> = hws.iter().map(|h| h.as_slice()).collect();
+        let (u, _) = prob.contour_many(&cont, &loads, &xs, opts.contour_tol);
+        let no_value = || GenuineError::NoConvergence {
             what: "contour",
             detail: "no value".into(),
-        })?;
-        let u_fine = u.pop().ok_or_else(|| GenuineError::NoConvergence {
-            what: "contour",
-            detail: "no value".into(),
-        })?;
-        let v_hat = prob.normalise(&mut coef, u_fine, &xs)?;
-        let coarse_v_hat = prob.normalise(&mut coarse, u_coarse, &xs)?;
+        };
+        let mut u = u.into_iter();
+        let v_hat = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
+        let mut coarser = Vec::with_capacity(fits.len());
+        for (_, mut c) in fits {
+            coarser.push(prob.normalise(&mut c, u.next().ok_or_else(no_value)?, &xs)?);
+        }
+        let mut coarser = coarser.into_iter();
+        let coarse_v_hat = coarser.next().ok_or_else(no_value)?;
+        let middle_v_hat = coarser.next();
         Ok(GenuineCase {
             prob,
             fit: Fit {
@@ -622,6 +640,7 @@ impl<T: CachedRules> GenuineCase<T> {
                 residual,
             },
             coarse_v_hat,
+            middle_v_hat,
             opts,
         })
     }
@@ -674,11 +693,30 @@ impl<T: CachedRules> GenuineCase<T> {
         self.coarse_v_hat.clone()
     }
 
-    /// |V_hat(N) - V_hat(N/2)| + [`roundoff_floor`] |V_hat|, the (absolute) error estimate of
-    /// V_hat from two basis sizes; the floor is that of the working precision.
+    /// The (absolute) error estimate of V_hat, plus [`roundoff_floor`] |V_hat| of the working
+    /// precision.
+    ///
+    /// In f64 it is d2 = |V_hat(N) - V_hat(N/2)|, which bounds the coarse solve. Above f64,
+    /// where that bound can stay many digits above the error reached (1e-19 for an actual
+    /// 2e-37 at 128 bits, gamma = 0), the geometric convergence in the degree is extrapolated
+    /// from a third size: with d4 = |V_hat(N) - V_hat(3N/4)|, e(N) ~ d4^2/d2 (e(k) = C rho^(-k)
+    /// through N/2 and 3N/4), taken with a factor 100 of margin, and only when the sizes
+    /// converge (d4 <= d2/4); otherwise d2.
     pub fn error_estimate(&self) -> f64 {
-        let d = (self.fit.v_hat.clone() - &self.coarse_v_hat).abs().to_f64();
-        d + roundoff_floor(self.prob.prec) * self.fit.v_hat.to_f64().abs()
+        let d2 = (self.fit.v_hat.clone() - &self.coarse_v_hat).abs().to_f64();
+        let floor = roundoff_floor(self.prob.prec) * self.fit.v_hat.to_f64().abs();
+        let d = match &self.middle_v_hat {
+            Some(mid) => {
+                let d4 = (self.fit.v_hat.clone() - mid).abs().to_f64();
+                if d4 <= d2 / 4.0 && d2 > 0.0 {
+                    (100.0 * d4 * (d4 / d2)).min(d2)
+                } else {
+                    d2
+                }
+            }
+            None => d2,
+        };
+        d + floor
     }
 
     /// h(x) = dS/dx at 0 < x < p (p - x given exactly by the caller when known).
