@@ -298,17 +298,8 @@ pub fn genuine_report<T: CachedRules>(
     o.insert("p".into(), real(&g.p(), digits));
     o.insert("m".into(), real(ray.m(), digits));
     o.insert("m_r".into(), real(ray.m_r(), digits));
-    let regime = match apex.kind {
-        genuine::ApexKind::Finite => "finite",
-        genuine::ApexKind::Logarithmic => "logarithmic",
-        genuine::ApexKind::Power => "power",
-    };
-    o.insert("regime".into(), Value::String(regime.into()));
-    let lambda = if apex.kind == genuine::ApexKind::Power {
-        apex.lambdas[0].clone()
-    } else {
-        g.p().zero()
-    };
+    o.insert("regime".into(), Value::String(apex.kind.name().into()));
+    let lambda = apex.leading().cloned().unwrap_or_else(|| g.p().zero());
     o.insert("apex_exponent".into(), real(&lambda, digits));
     o.insert(
         "apex_amplitude_over_mu_cot_theta".into(),

@@ -677,11 +677,7 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         let two_o0 = 2.0 * cases[q.gamma_index].omega0();
         let (solution, regime, exponent) = if q.genuine {
             let ex = &gapex[q.gamma_index].0;
-            (
-                Solution::Genuine,
-                genuine_kind_name(ex.kind),
-                genuine_exponent(ex),
-            )
+            (Solution::Genuine, ex.kind.name(), genuine_exponent(ex))
         } else {
             (STRESS_SOLUTION, a.regime.name(), two_o0)
         };
@@ -807,19 +803,10 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
     write(ctx, &t, &page)
 }
 
-/// The name of a genuine apex regime (as [`ApexRegime::name`]).
-pub fn genuine_kind_name(k: genuine::ApexKind) -> &'static str {
-    match k {
-        genuine::ApexKind::Finite => "finite",
-        genuine::ApexKind::Logarithmic => "logarithmic",
-        genuine::ApexKind::Power => "power",
-    }
-}
-
-/// The apex exponent lambda of the genuine stress (sigma ~ x^(-lambda)): the largest root of
-/// the eigen-equation, 0 for a logarithmic apex.
+/// The apex exponent lambda of the genuine stress (sigma ~ x^(-lambda)), 0 for a finite or
+/// logarithmic apex.
 pub fn genuine_exponent(ex: &genuine::ApexExponents) -> f64 {
-    ex.lambdas.iter().copied().fold(0.0_f64, f64::max)
+    ex.leading().copied().unwrap_or(0.0)
 }
 
 /// The leading apex term of the genuine stress at x = r/(c1 t): A x^(-lambda) for a power

@@ -12,7 +12,7 @@ use wedge::{ApexRegime, Case, Coupling, Indenter, Solution};
 
 use super::contour::{as_polyline, Grid, Segment};
 use super::output::{Column, Table};
-use super::paper::{genuine_exponent, genuine_kind_name, material_line, write};
+use super::paper::{genuine_exponent, material_line, write};
 use super::plot::{Axis, Cell, Dash, Legend, Note, Page, Panel, Rgb, Series};
 use super::{material, palette, Ctx, Result, Summary};
 
@@ -112,7 +112,7 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
                 (*gamma).into(),
                 r.name().into(),
                 (*e).into(),
-                genuine_kind_name(*gk).into(),
+                gk.name().into(),
                 (*gl).into(),
             ])?;
         }

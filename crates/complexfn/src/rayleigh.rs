@@ -94,6 +94,10 @@ impl<T: Real> Rayleigh<T> {
     pub fn m2(&self) -> &T {
         &self.m2
     }
+    /// 1/m^2.
+    pub fn inv_m2(&self) -> &T {
+        &self.inv_m2
+    }
     /// m_R = c_R/c1, the positive simple zero of R.
     pub fn m_r(&self) -> &T {
         &self.m_r

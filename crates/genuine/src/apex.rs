@@ -34,6 +34,17 @@ pub enum ApexKind {
     Power,
 }
 
+impl ApexKind {
+    /// The name used in outputs: `finite`, `logarithmic` or `power` (as the paper's regimes).
+    pub fn name(self) -> &'static str {
+        match self {
+            ApexKind::Finite => "finite",
+            ApexKind::Logarithmic => "logarithmic",
+            ApexKind::Power => "power",
+        }
+    }
+}
+
 /// The roots of the apex eigen-equation.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ApexExponents<T = f64> {
@@ -42,6 +53,17 @@ pub struct ApexExponents<T = f64> {
     pub lambdas: Vec<T>,
     /// The regime.
     pub kind: ApexKind,
+}
+
+impl<T: Real> ApexExponents<T> {
+    /// The exponent of the leading apex behaviour S ~ x^(-lambda): the largest root for a power
+    /// singularity, 0 for a finite or logarithmic apex.
+    pub fn leading(&self) -> Option<&T> {
+        match self.kind {
+            ApexKind::Power => self.lambdas.first(),
+            _ => None,
+        }
+    }
 }
 
 /// Roots t of A t^2 + B t + C = 0 (A > 0), with the convention that for C = 0 the root t = 0

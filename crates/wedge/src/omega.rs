@@ -145,7 +145,7 @@ impl<T: Real> OmegaFn<T> {
             return Cx::real(s.re.zero());
         }
         let one = s.re.one();
-        let inv_m2 = self.ray.m2().clone().recip();
+        let inv_m2 = self.ray.inv_m2().clone();
         let sm = s.clone().scale(&inv_m2);
         let r1 = (-s.clone()).add_re(&one).sqrt();
         let r2 = (-sm.clone()).add_re(&one).sqrt();
@@ -171,7 +171,7 @@ impl<T: Real> OmegaFn<T> {
     /// The parts of tan(pi Omega) at s = xi^2 (real on the cut, or complex near it) in the
     /// form used by [`Self::divided_difference`].
     pub(crate) fn tan_form<F: Field<T>>(&self, s: &F) -> TanForm<F> {
-        let inv_m2 = self.ray.m2().clone().recip();
+        let inv_m2 = self.ray.inv_m2().clone();
         // 1 - c s
         let one_minus = |c: &T| s.clone().rmul(c) * -1.0 + 1.0;
         let r1 = one_minus(&inv_m2.one()).sqrt_f();
@@ -217,7 +217,7 @@ impl<T: Real> OmegaFn<T> {
     /// and pi (Omega_u - Omega_s) = atan((A_u - A_s)/(1 + A_u A_s)) (A_u A_s >= 0 on the cut,
     /// so no branch of the arctangent is crossed near it).
     pub(crate) fn divided_difference<F: Field<T>>(&self, u: &TanForm<F>, s: &TanForm<F>) -> F {
-        let inv_m2 = self.ray.m2().clone().recip();
+        let inv_m2 = self.ray.inv_m2().clone();
         let one = inv_m2.one();
         let dw2 = (u.s.clone() + &s.s)
             .rmul(&inv_m2)
