@@ -113,6 +113,8 @@ pub trait Real:
     fn parse_prec(s: &str, bits: u32) -> Result<Self>;
     /// An MPFR value rounded to `bits` bits (to the nearest double for `f64`).
     fn from_mpfr(x: &Float, bits: u32) -> Self;
+    /// This value as an MPFR number of `bits` bits (exact when `bits` >= its precision).
+    fn to_mpfr(&self, bits: u32) -> Float;
     /// Mantissa length of this value in bits.
     fn prec(&self) -> u32;
     /// Nearest `f64`.
@@ -250,6 +252,9 @@ impl Real for f64 {
     fn from_mpfr(x: &Float, _bits: u32) -> Self {
         x.to_f64()
     }
+    fn to_mpfr(&self, bits: u32) -> Float {
+        Float::with_val(bits, *self)
+    }
     #[inline]
     fn prec(&self) -> u32 {
         53
@@ -375,6 +380,9 @@ impl Real for Float {
     }
     fn from_mpfr(x: &Float, bits: u32) -> Self {
         Float::with_val(bits, x)
+    }
+    fn to_mpfr(&self, bits: u32) -> Float {
+        Float::with_val(bits, self)
     }
     #[inline]
     fn prec(&self) -> u32 {

@@ -19,5 +19,5 @@ pub mod solver;
 
 pub use apex::{ApexExponents, ApexKind};
 pub use error::{GenuineError, Result};
-pub use kernels::Lamb;
+pub use kernels::{ContourDisplacement, Lamb};
 pub use solver::{load_through_kernels, roundoff_floor, GenuineCase, SolveOptions};

@@ -1,5 +1,5 @@
 //! Lamb's kernels and the contour representation against closed-form half-plane solutions.
-use genuine::kernels::{point_load, uniform_load, Lamb, C64};
+use genuine::kernels::{point_load, uniform_load, ContourDisplacement, Lamb, C64};
 
 const M: f64 = 1000.0 / 1870.83; // the paper's material
 

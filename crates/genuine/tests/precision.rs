@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use complexfn::{Cx, Real};
-use genuine::kernels::{point_load, uniform_load, Lamb};
+use genuine::kernels::{point_load, uniform_load, ContourDisplacement, Lamb};
 use genuine::{GenuineCase, SolveOptions};
 use rug::Float;
 use wedge::{Case, Coupling, Indenter, Material, Solution};
