@@ -121,6 +121,7 @@ impl<T: CachedRules> HalfPlane<T> {
             return Err(self.at_rayleigh("a cell corner on the Rayleigh ray |X| = c_R T"));
         }
         let prof = self.corner_profile(order, &s)?;
+        let prof = self.finite("a cell corner primitive", &s, prof)?;
         let scale = t.clone().powi(order as i32) / t.pi();
         let odd = if x.is_sign_negative() { -1.0 } else { 1.0 };
         let sc = |e: Estimate<T>, sign: f64| Estimate {

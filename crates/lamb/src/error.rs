@@ -25,6 +25,15 @@ pub enum LambError {
         /// s_R, printed.
         s_r: String,
     },
+    /// A value that came out non-finite (overflow, or a point within rounding of a
+    /// singularity); never returned as a number.
+    #[error("{quantity} could not be computed at s = {s}: the result is not finite (a point within rounding of a singularity, or an overflow)")]
+    NotFinite {
+        /// The quantity asked for.
+        quantity: &'static str,
+        /// The point, printed.
+        s: String,
+    },
     /// An error of the complex-function layer.
     #[error(transparent)]
     Complex(#[from] complexfn::Error),

@@ -293,6 +293,24 @@ impl<T: Real> HalfPlane<T> {
         Ok(())
     }
 
+    /// `t` unchanged if every value and error estimate is finite, else [`LambError::NotFinite`].
+    pub(crate) fn finite(
+        &self,
+        quantity: &'static str,
+        s: &T,
+        t: Triple<Estimate<T>>,
+    ) -> Result<Triple<Estimate<T>>> {
+        let ok = |e: &Estimate<T>| e.value.is_finite() && e.err.is_finite();
+        if ok(&t.zz) && ok(&t.xz) && ok(&t.xx) {
+            Ok(t)
+        } else {
+            Err(LambError::NotFinite {
+                quantity,
+                s: short(s.to_f64()),
+            })
+        }
+    }
+
     pub(crate) fn at_rayleigh(&self, quantity: &'static str) -> LambError {
         LambError::AtRayleighArrival {
             quantity,
@@ -350,10 +368,11 @@ impl<T: Real> HalfPlane<T> {
         // s_R and m are rounded: near the pole and the S front the value moves with them
         let near_s = (s.clone() - &self.m).abs().to_f64().max(f64::MIN_POSITIVE);
         let cond = self.pole_conditioning(s) + 2.0 * self.m.to_f64() / near_s;
-        Ok(value.map(|v| {
+        let out = value.map(|v| {
             let err = (16.0 + cond) * eps * v.to_f64().abs();
             Estimate { value: v, err }
-        }))
+        });
+        self.finite("the impulse response g(s)", s, out)
     }
 }
 

@@ -110,7 +110,8 @@ impl<T: CachedRules> HalfPlane<T> {
             let (a, b) = f(&Cx::real(x.clone()));
             Factor::Real(a.re, b.re)
         };
-        let mut out = vec![real(&self.x_r)];
+        let (a, b) = f(&Cx::real(self.x_r.clone()));
+        let mut out = vec![Factor::Pole(a.re, b.re)];
         match &self.spurious {
             Spurious::Real(x1, x2) => {
                 out.push(real(x1));
@@ -366,25 +367,48 @@ impl<T: CachedRules> HalfPlane<T> {
         let one = s.one();
         let x = s.clone().sqr() * &self.a;
         let v = ((one.clone() - s) * (one.clone() + s)).sqrt();
+        // s^2 - s_R^2 exactly (up to rounding of the product), for the distance of each head
+        // variable from the Rayleigh pole (docs/lamb.md, section 3)
+        let d2 = (s.clone() - &self.s_r) * (s.clone() + &self.s_r);
+        let v_r = (one.clone() - self.s_r.clone().sqr()).sqrt();
         let (mut zz, mut xx) = if n == 1 {
             let omv = s.clone().sqr() / (one.clone() + &v);
-            (t.zz_v.eval(&v, Some(&omv)), t.xx_v.eval(&v, Some(&omv)))
+            let gap = d2.clone() / (v_r.clone() + &v);
+            (
+                t.zz_v.eval(&v, Some(&omv), Some(&gap)),
+                t.xx_v.eval(&v, Some(&omv), Some(&gap)),
+            )
         } else if *s == 0.0 {
             (t.zz_v.eval_infinite(s), t.xx_v.eval_infinite(s))
         } else {
             let h = v.clone() / s;
-            (t.zz_v.eval(&h, None), t.xx_v.eval(&h, None))
+            let gap =
+                d2.clone() / (s.clone() * &self.s_r * (v_r.clone() * s + v.clone() * &self.s_r));
+            (
+                t.zz_v.eval(&h, None, Some(&gap)),
+                t.xx_v.eval(&h, None, Some(&gap)),
+            )
         };
         if *s < self.m {
             let w = ((self.m.clone() - s) * (self.m.clone() + s)).sqrt() / &self.m;
+            let w_r = (one.clone() - &self.x_r).sqrt();
             let (a, b) = if n == 1 {
                 let omw = x.clone() / (one.clone() + &w);
-                (t.zz_w.eval(&w, Some(&omw)), t.xx_w.eval(&w, Some(&omw)))
+                let gap = d2.clone() * &self.a / (w_r.clone() + &w);
+                (
+                    t.zz_w.eval(&w, Some(&omw), Some(&gap)),
+                    t.xx_w.eval(&w, Some(&omw), Some(&gap)),
+                )
             } else if *s == 0.0 {
                 (t.zz_w.eval_infinite(s), t.xx_w.eval_infinite(s))
             } else {
                 let h = w.clone() * &self.m / s;
-                (t.zz_w.eval(&h, None), t.xx_w.eval(&h, None))
+                let gap = d2.clone() * &self.m
+                    / (s.clone() * &self.s_r * (w_r.clone() * s + w.clone() * &self.s_r));
+                (
+                    t.zz_w.eval(&h, None, Some(&gap)),
+                    t.xx_w.eval(&h, None, Some(&gap)),
+                )
             };
             zz.value += &a.value;
             zz.err += a.err;
@@ -405,7 +429,7 @@ impl<T: CachedRules> HalfPlane<T> {
                 xz.err += std::f64::consts::PI * c.k_r.to_f64().abs() * c.s_r.to_f64() * srn;
             }
         }
-        Ok(Triple {
+        let out = Triple {
             zz: Estimate {
                 value: zz.value,
                 err: zz.err,
@@ -415,7 +439,8 @@ impl<T: CachedRules> HalfPlane<T> {
                 value: xx.value,
                 err: xx.err,
             },
-        })
+        };
+        self.finite("the moment M_n(s)", s, out)
     }
 
     fn xz_moment(&self, t: &MomentTerms<T>, n: usize, s: &T) -> Estimate<T> {
@@ -426,7 +451,7 @@ impl<T: CachedRules> HalfPlane<T> {
                     let tau = ((one.clone() - s) * (one.clone() + s)
                         / ((s.clone() - &self.m) * (s.clone() + &self.m)))
                         .sqrt();
-                    let e = r.eval(&tau, None);
+                    let e = r.eval(&tau, None, None);
                     Estimate {
                         value: e.value,
                         err: e.err,

@@ -31,6 +31,9 @@ pub enum Factor<T> {
     Pair(Cx<T>, Cx<T>),
     /// -u + 1 (the exact unit root), times `scale`: scale (1 - u).
     Unit(T),
+    /// A real alpha u + beta whose root is the Rayleigh pole: its atanh is formed from the
+    /// caller's exact distance sqrt(a) - V (see [`EvenRational::eval`]).
+    Pole(T, T),
 }
 
 /// An even rational function c N(u)/prod(factors), u = v^2, before it is put in partial
@@ -50,6 +53,7 @@ struct RealTerm<T> {
     r: T,
     c: T,
     unit: bool,
+    pole: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -111,7 +115,9 @@ impl<T: Real> Rational<T> {
         let mut out = Vec::new();
         for f in &self.factors {
             match f {
-                Factor::Real(a, b) => out.push((Cx::real(a.clone()), Cx::real(b.clone()))),
+                Factor::Real(a, b) | Factor::Pole(a, b) => {
+                    out.push((Cx::real(a.clone()), Cx::real(b.clone())))
+                }
                 Factor::Pair(a, b) => {
                     out.push((a.clone(), b.clone()));
                     out.push((a.clone().conj(), b.clone().conj()));
@@ -170,12 +176,19 @@ impl<T: Real> Rational<T> {
         let mut j = 0;
         for f in &self.factors {
             match f {
-                Factor::Real(..) | Factor::Unit(_) => {
+                Factor::Real(..) | Factor::Unit(_) | Factor::Pole(..) => {
                     let a = roots[j].re.clone();
                     let c = coef(j).re;
                     let unit = matches!(f, Factor::Unit(_));
+                    let pole = matches!(f, Factor::Pole(..));
                     let r = a.clone().abs().sqrt();
-                    real.push(RealTerm { a, r, c, unit });
+                    real.push(RealTerm {
+                        a,
+                        r,
+                        c,
+                        unit,
+                        pole,
+                    });
                     j += 1;
                 }
                 Factor::Pair(..) => {
@@ -249,6 +262,7 @@ impl<T: Real> Rational<T> {
                     }
                 }
                 Factor::Unit(s) => factors.push(Factor::Unit(s.clone()).reflect_unit()),
+                Factor::Pole(a, b) => factors.push(Factor::Pole(b.clone(), a.clone())),
                 Factor::Pair(a, b) => factors.push(Factor::Pair(b.clone(), a.clone())),
             }
         }
@@ -298,6 +312,7 @@ impl EvenRational<rug::Float> {
                     r: r(&t.r),
                     c: r(&t.c),
                     unit: t.unit,
+                    pole: t.pole,
                 })
                 .collect(),
             pairs: self
@@ -317,10 +332,11 @@ impl EvenRational<rug::Float> {
 }
 
 impl<T: Real> EvenRational<T> {
-    /// `Int_0^V`, V >= 0 finite. `one_minus_v` is 1 - V computed exactly by the caller
-    /// (used by a [`Factor::Unit`] term; pass `None` to form it here). The principal value is
-    /// taken past a positive real root; `V` exactly at one is the caller's to refuse.
-    pub fn eval(&self, v: &T, one_minus_v: Option<&T>) -> Valued<T> {
+    /// `Int_0^V`, V >= 0 finite. `one_minus_v` is 1 - V and `pole_gap` is sqrt(a_R) - V for
+    /// the [`Factor::Pole`] root a_R, each computed without cancellation by the caller (pass
+    /// `None` to form them here by subtraction). The principal value is taken past a positive
+    /// real root; V at a root is the caller's to refuse (the value is then infinite).
+    pub fn eval(&self, v: &T, one_minus_v: Option<&T>, pole_gap: Option<&T>) -> Valued<T> {
         let eps = v.epsilon().to_f64();
         let v2 = v.clone().sqr();
         if v2 <= self.taylor_v2 {
@@ -341,8 +357,9 @@ impl<T: Real> EvenRational<T> {
                 (v.clone() / &t.r).atan() / &t.r
             } else {
                 let z = v.clone() / &t.r;
-                let omz = match (t.unit, one_minus_v) {
-                    (true, Some(g)) => g.clone(),
+                let omz = match (t.unit, one_minus_v, t.pole, pole_gap) {
+                    (true, Some(g), _, _) => g.clone(),
+                    (_, _, true, Some(g)) => g.clone() / &t.r,
                     _ => z.one() - &z,
                 };
                 -(atanh_pv(&z, &omz) / &t.r)
@@ -448,13 +465,13 @@ mod tests {
         };
         let h = r.head();
         for v in [0.05, 0.3, 1.0, 2.5] {
-            let got = h.eval(&v, None).value;
+            let got = h.eval(&v, None, None).value;
             let want = simpson(f, 0.0, v, 4000);
             assert!((got - want).abs() < 1e-11, "{v}: {got} {want}");
         }
         let t = r.tail();
         for tt in [0.5, 2.0, 9.0] {
-            let got = t.eval(&(1.0 / tt), None).value;
+            let got = t.eval(&(1.0 / tt), None, None).value;
             // Int_T^inf f = Int_0^{1/T} f(1/w^2)/w^2 dw
             let want = simpson(
                 |w| if w == 0.0 { 0.0 } else { f(1.0 / w) / (w * w) },
@@ -476,13 +493,13 @@ mod tests {
         let h = r.head();
         for v in [0.1, 0.45, 0.55, 3.0] {
             let want = ((1.0 - 2.0 * v) / (1.0 + 2.0 * v)).abs().ln();
-            let got = h.eval(&v, None).value;
+            let got = h.eval(&v, None, None).value;
             assert!((got - want).abs() < 1e-14 * want.abs().max(1.0), "{v}");
         }
         // the Taylor path near 0 keeps relative accuracy
         let v = 1e-3;
         let want = ((1.0 - 2.0 * v) / (1.0 + 2.0 * v)).ln();
-        let got = h.eval(&v, None).value;
+        let got = h.eval(&v, None, None).value;
         assert!(((got - want) / want).abs() < 1e-13);
     }
 }

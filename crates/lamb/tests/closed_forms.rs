@@ -350,3 +350,44 @@ fn bad_input_is_refused_with_the_parameter_named() {
     let msg = hp.cell(0, &0.5, &0.4).unwrap_err().to_string();
     assert!(msg.contains("sa <= sb"), "{msg}");
 }
+
+#[test]
+fn no_non_finite_value_leaves_the_library() {
+    // points within an ulp of the Rayleigh arrival, the fronts, and a pseudo-random sweep
+    let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for nu in POISSON {
+        let hp = HalfPlane::from_poisson(nu).unwrap();
+        let (m, sr) = (*hp.m(), *hp.s_r());
+        let mut pts = vec![
+            sr * (1.0 + f64::EPSILON),
+            sr * (1.0 - f64::EPSILON / 2.0),
+            m * (1.0 + f64::EPSILON),
+            m * (1.0 - f64::EPSILON / 2.0),
+            1.0 - f64::EPSILON / 2.0,
+            1e-300,
+            f64::MIN_POSITIVE,
+        ];
+        pts.extend((0..400).map(|_| 1.2 * next()));
+        for s in pts {
+            let ok = |t: lamb::Triple<lamb::Estimate<f64>>| {
+                for e in [t.zz, t.xz, t.xx] {
+                    assert!(e.value.is_finite() && e.err.is_finite(), "nu {nu} s {s:e}");
+                }
+            };
+            if let Ok(t) = hp.impulse(&s) {
+                ok(t);
+            }
+            for n in 0..3 {
+                if let Ok(t) = hp.moment(n, &s) {
+                    ok(t);
+                }
+            }
+        }
+    }
+}
