@@ -21,12 +21,16 @@
 //! with lambda = m^2, kappa = 1 for the v-terms and lambda = 1, kappa = m^(1 - n) for the
 //! w-terms. The cross term between P and S, -2 K v sqrt(x - 1) x/E, carries two square roots;
 //! for n = 1 the Euler substitution tau^2 = (1/m^2 - x)/(x - 1) makes it rational, and for
-//! n = 0, 2 it is an elliptic integral, integrated by Gauss-Legendre in the angle theta of
-//! s^2 = (1 + m^2)/2 - (1 - m^2)/2 cos theta, where the integrand is analytic and periodic.
+//! n = 0, 2 it is an elliptic integral: in the angle theta of
+//! s^2 = (1 + m^2)/2 - (1 - m^2)/2 cos theta the integrand is an analytic function of
+//! cos theta, so its cosine series converges geometrically; the series is computed once (by the
+//! trapezoidal rule, exact but for aliasing) and integrated term by term,
+//! Int_theta^pi f = (c_0/2)(pi - theta) - sin theta sum_k (c_k/k) U_{k-1}(cos theta), after the
+//! Rayleigh pole of the integrand in cos theta has been taken out and integrated in closed form.
 
-use std::sync::{Arc, OnceLock};
+use std::sync::OnceLock;
 
-use complexfn::quadrature::{gauss_legendre_rule, CachedRules};
+use complexfn::quadrature::CachedRules;
 use complexfn::{Cx, Real};
 
 use crate::error::{invalid, short, Result};
@@ -56,12 +60,43 @@ struct MomentTerms<T> {
     xz: XzTerm<T>,
 }
 
+/// A cosine series on [0, pi] with the bound of its truncation.
+#[derive(Clone, Debug)]
+struct CosineSeries<T> {
+    /// c_0 .. c_K of the integrand less its Rayleigh pole.
+    coef: Vec<T>,
+    /// The pole r_p/(cos theta - zeta_R) taken out (zeta_R > 1): (zeta_R, r_p).
+    pole: (T, T),
+    /// Bound of the rounding of each coefficient.
+    coef_err: f64,
+    /// Bound of the aliasing and truncation error of any integral of the series over a part
+    /// of [0, pi].
+    tail: f64,
+}
+
+impl<T: Real> CosineSeries<T> {
+    /// sum_{k>=1} (c_k/k) U_{k-1}(x) by Clenshaw's recurrence, with the sum of |c_k/k|.
+    fn sine_sum(&self, x: &T) -> (T, f64) {
+        let two_x = x.clone() * 2.0;
+        let (mut b1, mut b2) = (x.zero(), x.zero());
+        let mut mag = 0.0;
+        for k in (1..self.coef.len()).rev() {
+            let bk = self.coef[k].clone() / k as f64;
+            mag += bk.to_f64().abs();
+            let b0 = bk + two_x.clone() * &b1 - &b2;
+            b2 = b1;
+            b1 = b0;
+        }
+        (b1, mag)
+    }
+}
+
 #[derive(Clone, Debug)]
 enum XzTerm<T> {
     /// n = 1: Euler substitution, rational in tau.
     Euler(EvenRational<T>),
-    /// n = 0, 2: Gauss-Legendre in theta, with the error of the rule on [0, pi] from doubling.
-    Legendre { rule: Arc<Vec<(T, T)>>, err: f64 },
+    /// n = 0, 2: the cosine series of the integrand in theta, integrated term by term.
+    Cosine(CosineSeries<T>),
 }
 
 /// P(c0 + c1 u) for P with ascending coefficients.
@@ -200,7 +235,7 @@ impl<T: CachedRules> HalfPlane<T> {
         };
         let xz = match euler {
             Some(r) => XzTerm::Euler(r),
-            None => self.legendre_xz(n),
+            None => self.cosine_xz(n),
         };
         MomentTerms {
             zz_v,
@@ -263,68 +298,143 @@ impl<T: CachedRules> HalfPlane<T> {
 
     /// The cross term's integrand in theta between P and S (module docs), for moment n.
     fn xz_theta(&self, theta: &T, n: usize) -> T {
-        let one = self.m.one();
         let (sin, cos) = theta.clone().sin_cos();
+        self.xz_sin_cos(&sin, &cos, n)
+    }
+
+    /// The same integrand from sin theta and cos theta.
+    fn xz_sin_cos(&self, sin: &T, cos: &T, n: usize) -> T {
+        let one = self.m.one();
         let om = one.clone() - &self.m2;
-        let y = ((one.clone() + &self.m2) - om.clone() * cos) / 2.0;
+        // 1 +- cos theta without cancellation at either end
+        let sin2 = sin.clone().sqr();
+        let (opc, omc) = if *cos < 0.0 {
+            let omc = one.clone() - cos;
+            (sin2.clone() / &omc, omc)
+        } else {
+            let opc = one.clone() + cos;
+            (opc.clone(), sin2.clone() / &opc)
+        };
+        // 1 - s^2 = (1 - m^2)(1 + cos)/2, s^2 - m^2 = (1 - m^2)(1 - cos)/2
+        let v2 = om.clone() * opc / 2.0;
+        let ym = om.clone() * omc / 2.0;
+        let y = ym.clone() + &self.m2;
         let x = y.clone() * &self.a;
-        let v2 = one.clone() - &y;
-        let xm1 = x.clone() - 1.0;
+        let xm1 = ym * &self.a;
         let k = one.lit(2.0) - &x;
         let e = k.clone().sqr().sqr() + v2 * &xm1 * 16.0;
         let sigma = y.clone().sqrt();
-        -(k * om.sqr() * sin.sqr() * x / (self.m.clone() * e * sigma.powi(n as i32 + 1) * 4.0))
+        -(k * om.sqr() * sin2 * x / (self.m.clone() * e * sigma.powi(n as i32 + 1) * 4.0))
     }
 
-    fn legendre_xz(&self, n: usize) -> XzTerm<T> {
-        let prec = self.m.prec();
-        let zero = self.m.zero();
+    /// The cosine series f(theta) = c_0/2 + sum_k c_k cos(k theta) of the cross term's
+    /// integrand (module docs) from the trapezoidal rule on [0, pi] (exact to the aliasing of
+    /// the coefficients beyond the last one kept), the number of samples doubled until the
+    /// coefficients have decayed below the working precision.
+    fn cosine_xz(&self, n: usize) -> XzTerm<T> {
         let pi = self.m.pi();
-        let target = self.m.epsilon().to_f64() * 4.0;
-        let mut nodes = 16;
-        let mut prev: Option<T> = None;
+        let one = self.m.one();
+        let eps = self.m.epsilon().to_f64();
+        // the Rayleigh pole in cos theta: f ~ r_p/(cos theta - zeta_R) (docs/lamb.md, section 3)
+        let om = one.clone() - &self.m2;
+        let zeta = ((one.clone() + &self.m2) - self.s_r.clone().sqr() * 2.0) / &om;
+        let k = one.lit(2.0) - &self.x_r;
+        let r_p = k * &om * (one.clone() - zeta.clone().sqr()) * &self.m
+            / (self.dc_r() * self.s_r.clone().powi(n as i32 + 1) * 2.0);
+        let mut samples = 32usize;
         loop {
-            let rule = match gauss_legendre_rule::<T>(nodes, prec) {
-                Ok(r) => r,
-                Err(_) => break,
-            };
-            let (val, _) = self.legendre_sum(&rule, &zero, &pi, n);
-            if let Some(p) = prev {
-                let diff = (val.clone() - &p).abs().to_f64();
-                let scale = val.clone().abs().to_f64().max(f64::MIN_POSITIVE);
-                if diff <= target * scale || nodes >= 2048 {
-                    // the doubled rule's error is far below the difference of the two
-                    return XzTerm::Legendre {
-                        rule,
-                        err: diff.max(target * scale),
-                    };
+            let mm = samples;
+            // cos(pi j/mm), j = 0 .. 2 mm - 1
+            let table: Vec<T> = (0..2 * mm)
+                .map(|j| (pi.clone() * (j as f64) / (mm as f64)).cos())
+                .collect();
+            let mut mag = 0.0;
+            let f: Vec<T> = (0..=mm)
+                .map(|i| {
+                    let w = if i == 0 || i == mm { 0.5 } else { 1.0 };
+                    let full = self.xz_theta(&(pi.clone() * (i as f64) / (mm as f64)), n);
+                    let pole = r_p.clone() / (table[i].clone() - &zeta);
+                    mag += w * (full.to_f64().abs() + pole.to_f64().abs());
+                    (full - pole) * w
+                })
+                .collect();
+            let mut c = Vec::with_capacity(mm + 1);
+            for k in 0..=mm {
+                let mut acc = self.m.zero();
+                for (i, fi) in f.iter().enumerate() {
+                    acc.mul_add_assign(fi, &table[(k * i) % (2 * mm)]);
                 }
+                c.push(acc * 2.0 / (mm as f64));
             }
-            prev = Some(val);
-            nodes *= 2;
-        }
-        let rule = gauss_legendre_rule::<T>(16, prec).expect("16-point rule");
-        XzTerm::Legendre {
-            rule,
-            err: f64::INFINITY,
+            let cmax = c.iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max);
+            let tail = c[3 * mm / 4..]
+                .iter()
+                .map(|x| x.to_f64().abs())
+                .fold(0.0, f64::max);
+            let coef_err = 8.0 * eps * mag * 2.0 / (mm as f64);
+            if tail <= (eps * cmax * 0.01).max(coef_err) || samples >= 1 << 12 {
+                // keep the coefficients above the rounding level
+                let mut keep = mm;
+                while keep > 1 && c[keep].to_f64().abs() <= eps * cmax * 0.01 {
+                    keep -= 1;
+                }
+                c.truncate(keep + 1);
+                return XzTerm::Cosine(CosineSeries {
+                    coef: c,
+                    pole: (zeta, r_p),
+                    coef_err,
+                    tail: tail * (mm as f64) / 4.0,
+                });
+            }
+            samples *= 2;
         }
     }
 
-    /// The rule's sum over [a, b] and the sum of the magnitudes of its terms (for the
-    /// rounding estimate: the integrand changes sign where K = 0).
-    fn legendre_sum(&self, rule: &[(T, T)], a: &T, b: &T, n: usize) -> (T, f64) {
-        let half = (b.clone() - a) / 2.0;
-        let mid = (b.clone() + a) / 2.0;
-        let mut sum = a.zero();
-        let mut mag = 0.0;
-        for (x, w) in rule {
-            let th = mid.clone() + half.clone() * x;
-            let f = self.xz_theta(&th, n);
-            mag += (w.to_f64() * f.to_f64()).abs();
-            sum.mul_add_assign(w, &f);
+    /// Int_theta^pi of the cross term's integrand for phi = pi - theta < 3/4 by Gauss-Legendre
+    /// in phi (the integrand is analytic there; sin and cos of theta are formed from phi, so
+    /// nothing is lost as phi -> 0), with the difference of two rule sizes as the error.
+    fn near_front_xz(&self, n: usize, phi: &T, s: &T) -> Estimate<T> {
+        let bits = s.prec();
+        let big = ((f64::from(bits) / 2.5) as usize).max(20);
+        let small = big * 2 / 3;
+        let eps = s.epsilon().to_f64();
+        let sum = |nodes: usize| -> Option<(T, f64)> {
+            let rule = complexfn::quadrature::gauss_legendre_rule::<T>(nodes, bits).ok()?;
+            let half = phi.clone() / 2.0;
+            let mut acc = s.zero();
+            let mut mag = 0.0;
+            for (x, w) in rule.iter() {
+                let (sp, cp) = (half.clone() + half.clone() * x).sin_cos();
+                let f = self.xz_sin_cos(&sp, &(-cp), n);
+                mag += (w.to_f64() * f.to_f64()).abs();
+                acc.mul_add_assign(w, &f);
+            }
+            let h = half.to_f64();
+            Some((acc * half, mag * h))
+        };
+        // double the rules until two sizes agree to the working precision (the integrand can
+        // have a complex singularity near the P front when K(1/m^2) is small, nu near 0)
+        let (mut big, mut small) = (big, small);
+        let mut best = Estimate {
+            value: s.zero(),
+            err: f64::INFINITY,
+        };
+        for _ in 0..6 {
+            let (Some((a, mag)), Some((b, _))) = (sum(big), sum(small)) else {
+                break;
+            };
+            let diff = (a.clone() - &b).abs().to_f64();
+            let err = diff + 16.0 * eps * mag;
+            if err < best.err {
+                best = Estimate { value: a, err };
+            }
+            if diff <= 64.0 * eps * mag {
+                break;
+            }
+            small = big;
+            big *= 2;
         }
-        let h = half.to_f64().abs();
-        (sum * half, mag * h)
+        best
     }
 
     fn terms(&self, n: usize) -> &MomentTerms<T> {
@@ -464,22 +574,57 @@ impl<T: CachedRules> HalfPlane<T> {
                     }
                 }
             }
-            XzTerm::Legendre { rule, err } => {
-                let pi = s.pi();
-                let lo = if *s > self.m {
+            XzTerm::Cosine(series) => {
+                // Int_theta^pi f = (c_0/2)(pi - theta) - sin(theta) sum_k (c_k/k) U_{k-1}(cos theta)
+                // + r_p Int_theta^pi dtheta/(cos theta - zeta_R), the last
+                // = -(2 r_p/sqrt(zeta^2 - 1)) atan(sqrt((zeta - 1)/(zeta + 1)) (1 + cos)/sin)
+                let eps = s.epsilon().to_f64();
+                let (zeta, r_p) = &series.pole;
+                let root = (zeta.clone().sqr() - 1.0).sqrt();
+                let kk = series.coef.len() as f64;
+                let rounding = series.coef_err * (s.pi().to_f64() + 1.0 + kk.ln());
+                if *s > self.m {
                     let om = one.clone() - &self.m2;
                     let s2 = s.clone().sqr();
-                    let sin = ((one.clone() - &s2) * (s2.clone() - &self.m2)).sqrt() * 2.0 / &om;
+                    let sin = ((one.clone() - s)
+                        * (one.clone() + s)
+                        * (s.clone() - &self.m)
+                        * (s.clone() + &self.m))
+                        .sqrt()
+                        * 2.0
+                        / &om;
                     let cos = ((one.clone() + &self.m2) - s2 * 2.0) / &om;
-                    sin.atan2(&cos)
+                    let theta = sin.clone().atan2(&cos);
+                    // phi = pi - theta, formed without cancellation
+                    let phi = sin.clone().atan2(&(-cos.clone()));
+                    if phi < 0.75 {
+                        // next to the P front the value vanishes like phi^3 and the series
+                        // would lose it to cancellation: integrate directly
+                        return self.near_front_xz(n, &phi, s);
+                    }
+                    let (sum, mag) = series.sine_sum(&cos);
+                    let head = series.coef[0].clone() / 2.0 * (s.pi() - &theta);
+                    let ratio = ((zeta.clone() - 1.0) / (zeta.clone() + 1.0)).sqrt()
+                        * (cos.clone() + 1.0)
+                        / &sin;
+                    let pole = -(r_p.clone() * 2.0 / &root * ratio.atan());
+                    let value = head.clone() - sin * sum + &pole;
+                    Estimate {
+                        err: series.tail
+                            + rounding
+                            + 16.0 * eps * (head.to_f64().abs() + kk * mag + pole.to_f64().abs()),
+                        value,
+                    }
                 } else {
-                    s.zero()
-                };
-                let (value, mag) = self.legendre_sum(rule, &lo, &pi, n);
-                // the rounding of the lower end theta(s) moves the integral by f(theta) d theta
-                let end = (self.xz_theta(&lo, n) * &lo).to_f64().abs();
-                let e = err * 2.0 + 16.0 * s.epsilon().to_f64() * (mag + end);
-                Estimate { value, err: e }
+                    let pole = -(r_p.clone() * s.pi() / &root);
+                    let value = series.coef[0].clone() / 2.0 * s.pi() + &pole;
+                    Estimate {
+                        err: series.tail
+                            + rounding
+                            + 16.0 * eps * (value.to_f64().abs() + pole.to_f64().abs()),
+                        value,
+                    }
+                }
             }
         };
         if *s < self.s_r {
