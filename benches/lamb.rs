@@ -8,7 +8,7 @@
 use std::hint::black_box;
 
 use complexfn::quadrature::CachedRules;
-use complexfn::{Precision, Real};
+use complexfn::Precision;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use lamb::cells::{Cell, TimeShape};
 use lamb::HalfPlane;

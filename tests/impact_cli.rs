@@ -102,7 +102,7 @@ fn wave_speeds_and_digits() {
             || text.starts_with("-1.250000000000000000000000000000000000"),
         "{text}"
     );
-    assert_eq!(hi["precision_bits"].as_u64().unwrap() > 133, true);
+    assert!(hi["precision_bits"].as_u64().unwrap() > 133);
 }
 
 #[test]

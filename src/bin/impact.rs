@@ -112,7 +112,9 @@ fn half_plane<T: CachedRules>(a: &GreenArgs, bits: u32) -> CliResult<HalfPlane<T
         (Some(c1), Some(c2), None) => {
             let c1: T = parse_num("--c1", c1, bits)?;
             let c2: T = parse_num("--c2", c2, bits)?;
-            if !(c1 > 0.0) || !(c2 > 0.0) {
+            if c1.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+                || c2.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+            {
                 return Err(CliError(format!(
                     "invalid --c1, --c2 = {}, {}: wave speeds must be > 0 m/s",
                     c1.to_f64(),

@@ -8,7 +8,7 @@
 //! (tangential force). The contour code has y = -z out of the body and surface tractions
 //! (T_y, T_x) = (sigma_yy, sigma_xy): a normal force F_z is T_y = -F_z, and u_z = -u_y.
 
-use complexfn::{Cx, Real};
+use complexfn::Cx;
 use genuine::kernels::{point_load, ContourDisplacement, Lamb};
 use lamb::HalfPlane;
 use rug::Float;

@@ -183,7 +183,7 @@ impl<T: CachedRules> HalfPlane<T> {
     fn even_form(&self, p: &[T], lambda: &T, kappa: &T, n: usize) -> EvenRational<T> {
         let half = n / 2;
         let deg = p.len() - 1;
-        let e = (deg + 0).saturating_sub(1 + half);
+        let e = deg.saturating_sub(1 + half);
         let one = lambda.one();
         let y = [one.clone(), one.clone()];
         let pre = -(lambda.clone().sqr() * lambda * kappa);

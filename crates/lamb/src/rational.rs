@@ -166,7 +166,7 @@ impl<T: Real> Rational<T> {
             let mut d = lin[j].0.clone();
             for (k, (a, b)) in lin.iter().enumerate() {
                 if k != j {
-                    d = d * &(a.clone() * aj + b);
+                    d *= &(a.clone() * aj + b);
                 }
             }
             poly_eval(&self.num, aj) / &d

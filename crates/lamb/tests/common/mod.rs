@@ -136,14 +136,14 @@ pub fn moment_by_quadrature<T: CachedRules>(
             });
             let (la, lb) = (a.clone(), sr.clone() - &d);
             if lb > la {
-                total += quad(&la, &lb, tol, &g);
+                total += quad(&la, &lb, tol, g);
             }
             let (ra, rb) = (sr.clone() + &d, b.clone());
             if rb > ra {
-                total += quad(&ra, &rb, tol, &g);
+                total += quad(&ra, &rb, tol, g);
             }
         } else {
-            total += quad(a, b, tol, &g);
+            total += quad(a, b, tol, g);
         }
     }
     if comp == 1 && *sa < sr && *sb > sr {
