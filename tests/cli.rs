@@ -1,31 +1,18 @@
 //! The `wedge` command line: the documented forms work, outputs carry their keys and digits
 //! and agree with library calls, and bad input gives a one-line message and exit code 2.
 
-use std::process::Command;
+mod common;
 
+use common::{num, run, run_json};
 use serde_json::Value;
 use wedge::{Case, Coupling, Indenter, Material, Solution};
 
 fn wedge(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_wedge"))
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    run(env!("CARGO_BIN_EXE_wedge"), args)
 }
 
 fn json(args: &[&str]) -> Value {
-    let (code, out, err) = wedge(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).unwrap()
-}
-
-fn num(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| v.to_string().parse().unwrap())
+    run_json(env!("CARGO_BIN_EXE_wedge"), args)
 }
 
 #[test]

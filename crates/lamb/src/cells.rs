@@ -74,7 +74,13 @@ impl<T: CachedRules> HalfPlane<T> {
             return Ok(zero_triple(s));
         }
         let eps = s.epsilon().to_f64();
-        let total = self.moment(0, &s.zero())?;
+        let total = match self.total.get() {
+            Some(t) => t.clone(),
+            None => {
+                let t = self.moment(0, &s.zero())?;
+                self.total.get_or_init(|| t).clone()
+            }
+        };
         if *s >= 1.0 {
             let half = if order == 1 { 1.0 } else { 0.5 };
             return Ok(total.map(|e| Estimate {

@@ -27,6 +27,8 @@
 //! terms (c(0) = -16 (1 - m^2)).
 
 use complexfn::{Cx, Rayleigh, Real};
+use std::sync::OnceLock;
+
 use rug::Float;
 
 use crate::error::{invalid, short, LambError, Result};
@@ -121,6 +123,10 @@ pub struct HalfPlane<T> {
     /// The same half-plane with [`GUARD_BITS`] more bits, where the partial fractions are
     /// built (absent on the guard copy itself).
     pub(crate) guard: Option<Box<HalfPlane<Float>>>,
+    /// The Rayleigh constants, formed on first use.
+    pub(crate) constants: OnceLock<RayleighConstants<T>>,
+    /// M_0(0) = Int_0^1 g ds, formed on first use (every space-time corner needs it).
+    pub(crate) total: OnceLock<Triple<Estimate<T>>>,
 }
 
 /// Extra bits of the precision at which roots and partial fractions are formed.
@@ -159,6 +165,8 @@ impl<T: Real> HalfPlane<T> {
             spurious,
             moments: Default::default(),
             guard: Some(Box::new(guard)),
+            constants: OnceLock::new(),
+            total: OnceLock::new(),
         })
     }
 
@@ -210,6 +218,8 @@ impl<T: Real> HalfPlane<T> {
             spurious,
             moments: Default::default(),
             guard: None,
+            constants: OnceLock::new(),
+            total: OnceLock::new(),
         })
     }
 
@@ -262,7 +272,12 @@ impl<T: Real> HalfPlane<T> {
     }
 
     /// The Rayleigh constants: s_R, the residues of g_zz and g_xx, and the delta weight K_R.
-    pub fn rayleigh_constants(&self) -> RayleighConstants<T> {
+    pub fn rayleigh_constants(&self) -> &RayleighConstants<T> {
+        self.constants
+            .get_or_init(|| self.compute_rayleigh_constants())
+    }
+
+    fn compute_rayleigh_constants(&self) -> RayleighConstants<T> {
         let one = self.m.one();
         let dc = self.dc_r();
         let k = one.lit(2.0) - &self.x_r;

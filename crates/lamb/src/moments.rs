@@ -629,7 +629,7 @@ impl<T: CachedRules> HalfPlane<T> {
         };
         if *s < self.s_r {
             let c = self.rayleigh_constants();
-            let delta = s.pi() * c.k_r * c.s_r.powi(1 - n as i32);
+            let delta = s.pi() * &c.k_r * c.s_r.clone().powi(1 - n as i32);
             out.err += 16.0 * s.epsilon().to_f64() * delta.to_f64().abs();
             out.value += &delta;
         }

@@ -148,7 +148,7 @@ pub fn moment_by_quadrature<T: CachedRules>(
     }
     if comp == 1 && *sa < sr && *sb > sr {
         let c = hp.rayleigh_constants();
-        total += sa.pi() * c.k_r * c.s_r.powi(1 - n);
+        total += sa.pi() * &c.k_r * c.s_r.clone().powi(1 - n);
     }
     total
 }
