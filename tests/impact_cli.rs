@@ -93,6 +93,22 @@ fn wave_speeds_and_digits() {
 }
 
 #[test]
+fn a_cell_from_zero_gives_the_plane_wave_momentum_and_declares_it_unavailable() {
+    // Int_0^1 g_zz ds = pi m^2/2, Int_0^1 g_xx ds = pi m/2 (the P and S plane waves)
+    let v = json(&["green", "--poisson", "0.3", "--cells", "0:1", "--json"]);
+    let c = &v["cells"][0];
+    let m = num(&v["c2_over_c1"]);
+    let pi = std::f64::consts::PI;
+    assert!((num(&c["Ix_zz"]) - pi * m * m / 2.0).abs() < 1e-14);
+    assert!((num(&c["Ix_xx"]) - pi * m / 2.0).abs() < 1e-14);
+    assert!(c["It_zz"].is_null());
+    assert!(c["unavailable"]["It"]
+        .as_str()
+        .unwrap()
+        .contains("diverges"));
+}
+
+#[test]
 fn csv_output_has_a_header_and_columns() {
     let (code, out, _) = impact(&["green", "--poisson", "0.25", "--at", "0.2,0.7"]);
     assert_eq!(code, 0);

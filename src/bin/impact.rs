@@ -52,7 +52,8 @@ struct GreenArgs {
     /// Comma-separated points s = |x|/(c1 t) >= 0 (not s_R) for pointwise values.
     #[arg(long, allow_hyphen_values = true)]
     at: Option<String>,
-    /// Comma-separated cells sa:sb with 0 <= sa <= sb (sa > 0 for It).
+    /// Comma-separated cells sa:sb with 0 <= sa <= sb (for sa = 0, It diverges and is reported
+    /// unavailable with the reason).
     #[arg(long, allow_hyphen_values = true)]
     cells: Option<String>,
     /// Print the Rayleigh constants s_R, r_zz, r_xx, K_R.
@@ -213,17 +214,28 @@ fn green<T: CachedRules>(a: &GreenArgs, bits: u32, digits: usize) -> CliResult<V
                     "invalid cell {text}: admissible range is 0 <= sa <= sb"
                 )));
             }
-            if sa == 0.0 {
-                return Err(CliError(format!(
-                    "invalid cell {text}: sa must be > 0 (the temporal integral It = W(sa) - W(sb) diverges at sa = 0)"
-                )));
-            }
             let mut rec = Map::new();
             let mut errs = Map::new();
             rec.insert("sa".into(), out.real(&sa));
             rec.insert("sb".into(), out.real(&sb));
             triple_into(&out, &mut rec, &mut errs, "Ix", hp.cell(0, &sa, &sb)?);
-            triple_into(&out, &mut rec, &mut errs, "It", hp.cell(1, &sa, &sb)?);
+            if sa == 0.0 {
+                // It = W(0) - W(sb) diverges (W grows like (1 - nu) ln(1/s)): unavailable
+                for k in ["It_zz", "It_xz", "It_xx"] {
+                    rec.insert(k.into(), Value::Null);
+                }
+                let mut why = Map::new();
+                why.insert(
+                    "It".into(),
+                    Value::String(
+                        "diverges for sa = 0: the step response grows like (1 - nu) ln(1/s) as s -> 0"
+                            .into(),
+                    ),
+                );
+                rec.insert("unavailable".into(), Value::Object(why));
+            } else {
+                triple_into(&out, &mut rec, &mut errs, "It", hp.cell(1, &sa, &sb)?);
+            }
             rec.insert("error_estimate".into(), Value::Object(errs));
             list.push(Value::Object(rec));
         }
@@ -280,9 +292,17 @@ fn csv(v: &Value, cmdline: &str) -> String {
             .collect();
         println(format!("{},{}", cols.join(","), errs.join(",")));
         for r in rows {
-            let mut line: Vec<String> = cols.iter().map(|c| r[*c].to_string()).collect();
+            // an unavailable value (see the JSON's `unavailable`) is an empty field
+            let field = |v: &Value| {
+                if v.is_null() {
+                    String::new()
+                } else {
+                    v.to_string()
+                }
+            };
+            let mut line: Vec<String> = cols.iter().map(|c| field(&r[*c])).collect();
             for c in cols.iter().filter(|c| !c.starts_with('s')) {
-                line.push(r["error_estimate"][*c].to_string());
+                line.push(field(&r["error_estimate"][*c]));
             }
             println(line.join(","));
         }
