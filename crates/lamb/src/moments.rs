@@ -213,7 +213,7 @@ impl<T: CachedRules> HalfPlane<T> {
     }
 
     /// The moment terms of order n: the partial fractions from the guard copy, rounded once;
-    /// the Gauss-Legendre rule of the cross term at the working precision.
+    /// the cosine series of the cross term at the working precision.
     fn build_moment(&self, n: usize) -> MomentTerms<T> {
         let bits = self.m.prec();
         let (zz_v, zz_w, xx_v, xx_w, euler) = match &self.guard {

@@ -433,8 +433,7 @@ impl<T: Real> EvenRational<T> {
 mod tests {
     use super::*;
 
-    /// Int_0^V of f by a composite Gauss-Legendre-free midpoint-Richardson check is too weak;
-    /// use Simpson with many points on smooth cases instead.
+    /// Int_a^b f by composite Simpson (smooth test integrands only).
     fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, n: usize) -> f64 {
         let h = (b - a) / n as f64;
         let mut s = f(a) + f(b);
