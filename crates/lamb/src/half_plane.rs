@@ -197,13 +197,13 @@ impl<T: Real> HalfPlane<T> {
         // A real root at x = 1/m^2 (Poisson's ratio 0) sits on the P front, where the
         // substitutions of the step responses put their expansion point.
         if let Spurious::Real(xp, xm) = &spurious {
-            let tol = m.lit(1e-12);
+            let tol = m.epsilon() * 64.0;
             for x in [xp, xm] {
                 if ((x.clone() * &m2) - 1.0).abs() <= tol {
                     return Err(invalid(
                         "Poisson's ratio",
                         short(poisson_of(&m2).to_f64()),
-                        "(-1, 1/2) except |nu| < 1e-12 (at nu = 0 a root of the Rayleigh cubic lies on the P front)",
+                        "(-1, 1/2) except 0 (there a root of the Rayleigh cubic lies on the P front; use e.g. nu = 1e-6)",
                     ));
                 }
             }
@@ -382,7 +382,13 @@ impl<T: Real> HalfPlane<T> {
         };
         // s_R and m are rounded: near the pole and the S front the value moves with them
         let near_s = (s.clone() - &self.m).abs().to_f64().max(f64::MIN_POSITIVE);
-        let cond = self.pole_conditioning(s) + 2.0 * self.m.to_f64() / near_s;
+        let mut cond = self.pole_conditioning(s) + 2.0 * self.m.to_f64() / near_s;
+        if *s > self.m && *s < 1.0 {
+            // K = 2 - x between P and S vanishes where x = 2 (Poisson's ratio near 0 puts it
+            // next to the P front): its relative error is eps x/|K|, raised to the 4th power
+            let x = (s.clone().sqr() * &self.a).to_f64();
+            cond += 8.0 * x / (2.0 - x).abs().max(f64::MIN_POSITIVE);
+        }
         let out = value.map(|v| {
             let err = (16.0 + cond) * eps * v.to_f64().abs();
             Estimate { value: v, err }

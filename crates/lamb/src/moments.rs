@@ -297,13 +297,15 @@ impl<T: CachedRules> HalfPlane<T> {
     }
 
     /// The cross term's integrand in theta between P and S (module docs), for moment n.
-    fn xz_theta(&self, theta: &T, n: usize) -> T {
+    fn xz_theta(&self, theta: &T, n: usize) -> (T, f64) {
         let (sin, cos) = theta.clone().sin_cos();
         self.xz_sin_cos(&sin, &cos, n)
     }
 
-    /// The same integrand from sin theta and cos theta.
-    fn xz_sin_cos(&self, sin: &T, cos: &T, n: usize) -> T {
+    /// The same integrand from sin theta and cos theta, with the amplification of the
+    /// rounding by K = 2 - x (which vanishes at x = 2; relative error eps x/|K|, to the fourth
+    /// power in E).
+    fn xz_sin_cos(&self, sin: &T, cos: &T, n: usize) -> (T, f64) {
         let one = self.m.one();
         let om = one.clone() - &self.m2;
         // 1 +- cos theta without cancellation at either end
@@ -324,7 +326,10 @@ impl<T: CachedRules> HalfPlane<T> {
         let k = one.lit(2.0) - &x;
         let e = k.clone().sqr().sqr() + v2 * &xm1 * 16.0;
         let sigma = y.clone().sqrt();
-        -(k * om.sqr() * sin2 * x / (self.m.clone() * e * sigma.powi(n as i32 + 1) * 4.0))
+        let xf = x.to_f64();
+        let amp = 1.0 + 8.0 * xf / k.to_f64().abs().max(f64::MIN_POSITIVE);
+        let f = -(k * om.sqr() * sin2 * x / (self.m.clone() * e * sigma.powi(n as i32 + 1) * 4.0));
+        (f, amp)
     }
 
     /// The cosine series f(theta) = c_0/2 + sum_k c_k cos(k theta) of the cross term's
@@ -352,9 +357,9 @@ impl<T: CachedRules> HalfPlane<T> {
             let f: Vec<T> = (0..=mm)
                 .map(|i| {
                     let w = if i == 0 || i == mm { 0.5 } else { 1.0 };
-                    let full = self.xz_theta(&(pi.clone() * (i as f64) / (mm as f64)), n);
+                    let (full, amp) = self.xz_theta(&(pi.clone() * (i as f64) / (mm as f64)), n);
                     let pole = r_p.clone() / (table[i].clone() - &zeta);
-                    mag += w * (full.to_f64().abs() + pole.to_f64().abs());
+                    mag += w * (amp * full.to_f64().abs() + pole.to_f64().abs());
                     (full - pole) * w
                 })
                 .collect();
@@ -405,8 +410,8 @@ impl<T: CachedRules> HalfPlane<T> {
             let mut mag = 0.0;
             for (x, w) in rule.iter() {
                 let (sp, cp) = (half.clone() + half.clone() * x).sin_cos();
-                let f = self.xz_sin_cos(&sp, &(-cp), n);
-                mag += (w.to_f64() * f.to_f64()).abs();
+                let (f, amp) = self.xz_sin_cos(&sp, &(-cp), n);
+                mag += amp * (w.to_f64() * f.to_f64()).abs();
                 acc.mul_add_assign(w, &f);
             }
             let h = half.to_f64();

@@ -378,7 +378,7 @@ impl<T: Real> EvenRational<T> {
         }
         Valued {
             value: sum,
-            err: 16.0 * eps * mag,
+            err: 32.0 * eps * mag,
         }
     }
 
@@ -402,7 +402,7 @@ impl<T: Real> EvenRational<T> {
         }
         Valued {
             value: sum,
-            err: 16.0 * eps * mag,
+            err: 32.0 * eps * mag,
         }
     }
 
