@@ -345,6 +345,11 @@ impl<T: Real> HalfPlane<T> {
         let one = s.one();
         let zero = s.zero();
         let eps = s.epsilon().to_f64();
+        let mut k_dev = Triple {
+            zz: 0.0,
+            xz: 0.0,
+            xx: 0.0,
+        };
         let value = match self.region(s) {
             Region::AheadOfP => Triple {
                 zz: zero.clone(),
@@ -358,7 +363,18 @@ impl<T: Real> HalfPlane<T> {
                 let k = one.lit(2.0) - &x;
                 let k2 = k.clone().sqr();
                 let e = k2.clone().sqr() + v.clone().sqr() * &xm1 * 16.0;
+                let k4_e = (k2.clone().sqr() / &e).to_f64();
+                let ef = e.to_f64();
                 let vx_e = v * &x / e;
+                // K = 2 - x vanishes at x = 2 (next to the P front for Poisson's ratio near 0):
+                // its absolute rounding eps x moves each g by eps x |dg/dK|
+                let (kf, xf, r) = (k.to_f64().abs(), x.to_f64(), vx_e.to_f64().abs());
+                let sq = xm1.to_f64().abs().sqrt();
+                k_dev = Triple {
+                    zz: 2.0 * kf * r * (1.0 + 2.0 * k4_e) * xf,
+                    xz: 2.0 * sq * r * (1.0 + 4.0 * k4_e) * xf,
+                    xx: 16.0 * xm1.to_f64().abs() * r * kf.powi(3) / ef * xf,
+                };
                 Triple {
                     zz: -(k2 * &vx_e),
                     xz: -(k * xm1.clone().sqrt() * &vx_e * 2.0),
@@ -382,15 +398,12 @@ impl<T: Real> HalfPlane<T> {
         };
         // s_R and m are rounded: near the pole and the S front the value moves with them
         let near_s = (s.clone() - &self.m).abs().to_f64().max(f64::MIN_POSITIVE);
-        let mut cond = self.pole_conditioning(s) + 2.0 * self.m.to_f64() / near_s;
-        if *s > self.m && *s < 1.0 {
-            // K = 2 - x between P and S vanishes where x = 2 (Poisson's ratio near 0 puts it
-            // next to the P front): its relative error is eps x/|K|, raised to the 4th power
-            let x = (s.clone().sqr() * &self.a).to_f64();
-            cond += 8.0 * x / (2.0 - x).abs().max(f64::MIN_POSITIVE);
-        }
+        let cond = self.pole_conditioning(s) + 2.0 * self.m.to_f64() / near_s;
+        let dev = [k_dev.zz, k_dev.xz, k_dev.xx];
+        let mut i = 0;
         let out = value.map(|v| {
-            let err = (16.0 + cond) * eps * v.to_f64().abs();
+            let err = (16.0 + cond) * eps * v.to_f64().abs() + 4.0 * eps * dev[i];
+            i += 1;
             Estimate { value: v, err }
         });
         self.finite("the impulse response g(s)", s, out)

@@ -302,9 +302,8 @@ impl<T: CachedRules> HalfPlane<T> {
         self.xz_sin_cos(&sin, &cos, n)
     }
 
-    /// The same integrand from sin theta and cos theta, with the amplification of the
-    /// rounding by K = 2 - x (which vanishes at x = 2; relative error eps x/|K|, to the fourth
-    /// power in E).
+    /// The same integrand from sin theta and cos theta, with the magnitude that bounds its
+    /// rounding (|f| and the effect of rounding K = 2 - x, which vanishes at x = 2).
     fn xz_sin_cos(&self, sin: &T, cos: &T, n: usize) -> (T, f64) {
         let one = self.m.one();
         let om = one.clone() - &self.m2;
@@ -326,10 +325,13 @@ impl<T: CachedRules> HalfPlane<T> {
         let k = one.lit(2.0) - &x;
         let e = k.clone().sqr().sqr() + v2 * &xm1 * 16.0;
         let sigma = y.clone().sqrt();
-        let xf = x.to_f64();
-        let amp = 1.0 + 8.0 * xf / k.to_f64().abs().max(f64::MIN_POSITIVE);
-        let f = -(k * om.sqr() * sin2 * x / (self.m.clone() * e * sigma.powi(n as i32 + 1) * 4.0));
-        (f, amp)
+        // f = -K C/E; the rounding of K (absolute eps x) moves f by at most
+        // eps x |C|/E (1 + 4 K^4/E)
+        let k4_e = (k.clone().sqr().sqr() / &e).to_f64();
+        let c_e = om.sqr() * sin2 * &x / (self.m.clone() * e * sigma.powi(n as i32 + 1) * 4.0);
+        let f = -(k * &c_e);
+        let dev = f.to_f64().abs() + 4.0 * x.to_f64() * c_e.to_f64().abs() * (1.0 + 4.0 * k4_e);
+        (f, dev)
     }
 
     /// The cosine series f(theta) = c_0/2 + sum_k c_k cos(k theta) of the cross term's
@@ -357,9 +359,9 @@ impl<T: CachedRules> HalfPlane<T> {
             let f: Vec<T> = (0..=mm)
                 .map(|i| {
                     let w = if i == 0 || i == mm { 0.5 } else { 1.0 };
-                    let (full, amp) = self.xz_theta(&(pi.clone() * (i as f64) / (mm as f64)), n);
+                    let (full, dev) = self.xz_theta(&(pi.clone() * (i as f64) / (mm as f64)), n);
                     let pole = r_p.clone() / (table[i].clone() - &zeta);
-                    mag += w * (amp * full.to_f64().abs() + pole.to_f64().abs());
+                    mag += w * (dev + pole.to_f64().abs());
                     (full - pole) * w
                 })
                 .collect();
@@ -410,8 +412,8 @@ impl<T: CachedRules> HalfPlane<T> {
             let mut mag = 0.0;
             for (x, w) in rule.iter() {
                 let (sp, cp) = (half.clone() + half.clone() * x).sin_cos();
-                let (f, amp) = self.xz_sin_cos(&sp, &(-cp), n);
-                mag += amp * (w.to_f64() * f.to_f64()).abs();
+                let (f, dev) = self.xz_sin_cos(&sp, &(-cp), n);
+                mag += w.to_f64().abs() * dev;
                 acc.mul_add_assign(w, &f);
             }
             let h = half.to_f64();

@@ -6,7 +6,6 @@
 mod common;
 
 use common::fl;
-use complexfn::Real;
 use lamb::HalfPlane;
 
 #[test]
