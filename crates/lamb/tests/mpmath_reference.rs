@@ -3,7 +3,6 @@
 //! quadrature for the step responses and moments, two precisions agreeing to the digits kept),
 //! stored in `tests/reference/lamb_reference.json`.
 
-use complexfn::Real;
 use lamb::HalfPlane;
 use rug::Float;
 use serde_json::Value;
