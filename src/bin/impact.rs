@@ -313,11 +313,11 @@ fn csv(v: &Value, cmdline: &str) -> String {
 fn run(cli: Cli) -> CliResult<()> {
     match cli.command {
         Command::Green(a) => {
-            let (v, _) = match a.digits {
-                None => (green::<f64>(&a, 53, 17)?, 53),
+            let v = match a.digits {
+                None => green::<f64>(&a, 53, 17)?,
                 Some(d) => {
                     let p = Precision::from_digits(d, 24)?;
-                    (green::<Float>(&a, p.bits(), d as usize)?, p.bits())
+                    green::<Float>(&a, p.bits(), d as usize)?
                 }
             };
             let text = if a.json {

@@ -81,8 +81,8 @@ impl<T: CachedRules> HalfPlane<T> {
                 self.total.get_or_init(|| t).clone()
             }
         };
+        let half = if order == 1 { 1.0 } else { 0.5 };
         if *s >= 1.0 {
-            let half = if order == 1 { 1.0 } else { 0.5 };
             return Ok(total.map(|e| Estimate {
                 value: e.value * half,
                 err: e.err * half,
@@ -91,7 +91,6 @@ impl<T: CachedRules> HalfPlane<T> {
         let m0 = self.moment(0, s)?;
         let mn = self.moment(order, s)?;
         let sn = s.clone().powi(order as i32);
-        let half = if order == 1 { 1.0 } else { 0.5 };
         let comb = |t: Estimate<T>, a: Estimate<T>, b: Estimate<T>| {
             let p = sn.clone() * &b.value;
             let mag = p.to_f64().abs() + t.value.to_f64().abs() + a.value.to_f64().abs();

@@ -227,11 +227,8 @@ impl<T: CachedRules> HalfPlane<T> {
                     e.map(|e| e.round_to(bits)),
                 )
             }
-            None => {
-                // the guard copy itself: T is rug::Float here
-                let (a, b, c, d, e) = self.rationals(n);
-                (a, b, c, d, e)
-            }
+            // the guard copy itself: T is rug::Float here
+            None => self.rationals(n),
         };
         let xz = match euler {
             Some(r) => XzTerm::Euler(r),
@@ -546,18 +543,7 @@ impl<T: CachedRules> HalfPlane<T> {
                 xz.err += std::f64::consts::PI * c.k_r.to_f64().abs() * c.s_r.to_f64() * srn;
             }
         }
-        let out = Triple {
-            zz: Estimate {
-                value: zz.value,
-                err: zz.err,
-            },
-            xz,
-            xx: Estimate {
-                value: xx.value,
-                err: xx.err,
-            },
-        };
-        self.finite("the moment M_n(s)", s, out)
+        self.finite("the moment M_n(s)", s, Triple { zz, xz, xx })
     }
 
     fn xz_moment(&self, t: &MomentTerms<T>, n: usize, s: &T) -> Estimate<T> {
@@ -568,17 +554,9 @@ impl<T: CachedRules> HalfPlane<T> {
                     let tau = ((one.clone() - s) * (one.clone() + s)
                         / ((s.clone() - &self.m) * (s.clone() + &self.m)))
                         .sqrt();
-                    let e = r.eval(&tau, None, None);
-                    Estimate {
-                        value: e.value,
-                        err: e.err,
-                    }
+                    r.eval(&tau, None, None)
                 } else {
-                    let e = r.eval_infinite(s);
-                    Estimate {
-                        value: e.value,
-                        err: e.err,
-                    }
+                    r.eval_infinite(s)
                 }
             }
             XzTerm::Cosine(series) => {

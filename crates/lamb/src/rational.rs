@@ -21,6 +21,8 @@
 
 use complexfn::{Cx, Real};
 
+use crate::half_plane::Estimate;
+
 /// One linear factor alpha u + beta of the denominator; a `Pair` stands for the factor and its
 /// complex conjugate.
 #[derive(Clone, Debug)]
@@ -77,15 +79,6 @@ pub struct EvenRational<T> {
     taylor: Vec<T>,
     /// min |a_j| / 4: the largest V^2 for the Taylor path.
     taylor_v2: T,
-}
-
-/// An integral with its absolute error estimate.
-#[derive(Clone, Debug)]
-pub struct Valued<T> {
-    /// The value.
-    pub value: T,
-    /// Estimated absolute error (rounding and truncation).
-    pub err: f64,
 }
 
 fn poly_eval<T: Real>(p: &[T], x: &Cx<T>) -> Cx<T> {
@@ -336,7 +329,7 @@ impl<T: Real> EvenRational<T> {
     /// the [`Factor::Pole`] root a_R, each computed without cancellation by the caller (pass
     /// `None` to form them here by subtraction). The principal value is taken past a positive
     /// real root; V at a root is the caller's to refuse (the value is then infinite).
-    pub fn eval(&self, v: &T, one_minus_v: Option<&T>, pole_gap: Option<&T>) -> Valued<T> {
+    pub fn eval(&self, v: &T, one_minus_v: Option<&T>, pole_gap: Option<&T>) -> Estimate<T> {
         let eps = v.epsilon().to_f64();
         let v2 = v.clone().sqr();
         if v2 <= self.taylor_v2 {
@@ -376,14 +369,14 @@ impl<T: Real> EvenRational<T> {
             mag += term.to_f64().abs();
             sum += &term;
         }
-        Valued {
+        Estimate {
             value: sum,
             err: 32.0 * eps * mag,
         }
     }
 
     /// `Int_0^inf` (requires a proper rational function, deg N <= deg D - 1).
-    pub fn eval_infinite(&self, like: &T) -> Valued<T> {
+    pub fn eval_infinite(&self, like: &T) -> Estimate<T> {
         let eps = like.epsilon().to_f64();
         let half_pi = like.pi() / 2.0;
         let mut sum = like.zero();
@@ -400,13 +393,13 @@ impl<T: Real> EvenRational<T> {
             mag += term.to_f64().abs();
             sum += &term;
         }
-        Valued {
+        Estimate {
             value: sum,
             err: 32.0 * eps * mag,
         }
     }
 
-    fn taylor(&self, v: &T, v2: &T, eps: f64) -> Valued<T> {
+    fn taylor(&self, v: &T, v2: &T, eps: f64) -> Estimate<T> {
         let mut sum = v.zero();
         let mut mag = 0.0;
         let mut vp = v.clone();
@@ -422,7 +415,7 @@ impl<T: Real> EvenRational<T> {
             }
             vp *= v2;
         }
-        Valued {
+        Estimate {
             value: sum,
             err: 8.0 * eps * mag + 2.0 * last,
         }
