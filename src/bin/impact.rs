@@ -36,7 +36,14 @@ enum Command {
     /// Lamb's surface influence functions g(s), step responses W(s), cell integrals and the
     /// Rayleigh constants of the half-plane.
     Green(GreenArgs),
+    /// Transient impact of a rigid striker on the half-plane: histories of the penetration,
+    /// the contact half-width, the force, energies and pressure profiles, each with an error
+    /// estimate from grid refinement.
+    Run(impact_run::RunArgs),
 }
+
+#[path = "../impact_run.rs"]
+mod impact_run;
 
 #[derive(Args, Debug)]
 struct GreenArgs {
@@ -330,6 +337,7 @@ fn run(cli: Cli) -> CliResult<()> {
             let _ = std::io::stdout().lock().write_all(text.as_bytes());
             Ok(())
         }
+        Command::Run(a) => impact_run::run(&a, VERSION).map_err(CliError),
     }
 }
 

@@ -1,0 +1,510 @@
+//! A rigid-striker impact case: inputs in, solved histories out, every reported quantity with
+//! an error estimate from grid refinement (`docs/impact.md`, section 5).
+//!
+//! Dimensionless throughout (R the profile's length scale): x/R, c1 t/R, h/R, speeds over c1,
+//! pressure over rho c1^2, force per unit length over rho c1^2 R, energies over rho c1^2 R^2,
+//! the striker's mass per unit length as m0/(rho R^2).
+
+use lamb::HalfPlane;
+
+use crate::error::{invalid, ImpactError, Result};
+use crate::march::{EdgeLaw, March, Motion, StepState};
+use crate::profile::Profile;
+use crate::tables::Tables;
+
+/// Smallest admissible kappa = c1 dt/dx: below about 2 the marching scheme (pressure
+/// constant per cell and step, collocation at the step's end) is unstable.
+pub const KAPPA_MIN: f64 = 2.0;
+
+/// The striker's motion in dimensionless form.
+#[derive(Clone, Debug)]
+pub enum Drive {
+    /// Free rigid striker: mass ratio m0/(rho R^2) and initial speed V0/c1.
+    Free {
+        /// m0/(rho R^2) > 0.
+        mass_ratio: f64,
+        /// V0/c1 in (0, 1).
+        v0_over_c1: f64,
+    },
+    /// Penetration at constant speed V/c1.
+    Speed(f64),
+    /// Penetration from a table of (c1 t/R, h/R) points, starting at (0, 0), increasing t.
+    Table(Vec<(f64, f64)>),
+}
+
+/// The inputs of a case.
+#[derive(Clone, Debug)]
+pub struct ImpactCase {
+    /// Poisson's ratio of the half-plane, in (-1, 1/2) (nu = 0 excluded by the Lamb crate).
+    pub poisson: f64,
+    /// The striker's profile.
+    pub profile: Profile,
+    /// Free or driven.
+    pub drive: Drive,
+    /// The edge law.
+    pub law: EdgeLaw,
+    /// End time c1 t/R.
+    pub end: f64,
+    /// Cell width dx/R of the finest grid.
+    pub dx: f64,
+    /// kappa = c1 dt/dx (>= 2).
+    pub kappa: f64,
+    /// Refinement levels for the error estimate (the finest grid dx and 2, 4, ... times
+    /// coarser); 1 gives no estimate, 3 (default) gives the observed order.
+    pub levels: usize,
+}
+
+impl ImpactCase {
+    /// The case with the defaults dx = 0.01, kappa = 2, three levels.
+    pub fn new(poisson: f64, profile: Profile, drive: Drive, law: EdgeLaw, end: f64) -> Self {
+        ImpactCase {
+            poisson,
+            profile,
+            drive,
+            law,
+            end,
+            dx: 0.01,
+            kappa: 2.0,
+            levels: 3,
+        }
+    }
+
+    fn validate(&self) -> Result<()> {
+        self.profile.validate()?;
+        match &self.drive {
+            Drive::Free {
+                mass_ratio,
+                v0_over_c1,
+            } => {
+                if !(mass_ratio.is_finite() && *mass_ratio > 0.0) {
+                    return Err(invalid("mass ratio m0/(rho R^2)", mass_ratio, "(0, inf)"));
+                }
+                if !(v0_over_c1.is_finite() && *v0_over_c1 > 0.0 && *v0_over_c1 < 1.0) {
+                    return Err(invalid("V0/c1", v0_over_c1, "(0, 1)"));
+                }
+            }
+            Drive::Speed(v) => {
+                if !(v.is_finite() && *v > 0.0 && *v < 1.0) {
+                    return Err(invalid("driven speed V/c1", v, "(0, 1)"));
+                }
+            }
+            Drive::Table(t) => {
+                if t.len() < 2 || t[0] != (0.0, 0.0) {
+                    return Err(invalid(
+                        "driven table",
+                        format!("{} points", t.len()),
+                        "at least 2 points (c1 t/R, h/R) starting at (0, 0)",
+                    ));
+                }
+                for w in t.windows(2) {
+                    if !(w[1].0 > w[0].0) || !w[1].1.is_finite() {
+                        return Err(invalid(
+                            "driven table",
+                            format!("t = {}", w[1].0),
+                            "strictly increasing finite times, finite h",
+                        ));
+                    }
+                }
+                if t.last().map(|p| p.0).unwrap_or(0.0) < self.end {
+                    return Err(invalid(
+                        "driven table",
+                        format!("last time {}", t.last().unwrap().0),
+                        format!("a table reaching the end time {}", self.end),
+                    ));
+                }
+            }
+        }
+        if !(self.end.is_finite() && self.end > 0.0) {
+            return Err(invalid("end time c1 t/R", self.end, "(0, inf)"));
+        }
+        if !(self.dx.is_finite() && self.dx > 0.0) {
+            return Err(invalid("cell width dx/R", self.dx, "(0, inf)"));
+        }
+        if !(self.kappa.is_finite() && (KAPPA_MIN..=64.0).contains(&self.kappa)) {
+            return Err(invalid(
+                "kappa = c1 dt/dx",
+                self.kappa,
+                "[2, 64] (below 2 the marching scheme is unstable)",
+            ));
+        }
+        if !(1..=4).contains(&self.levels) {
+            return Err(invalid("refinement levels", self.levels, "1 to 4"));
+        }
+        let coarse = self.dx * (1 << (self.levels - 1)) as f64;
+        let steps = self.end / (self.kappa * self.dx);
+        if steps > 2.0e5 {
+            return Err(ImpactError::Grid {
+                name: "dx",
+                reason: format!("{steps:.0} time steps (at most 200000): raise dx or kappa"),
+            });
+        }
+        if self.end < 4.0 * self.kappa * coarse {
+            return Err(ImpactError::Grid {
+                name: "dx",
+                reason: format!(
+                    "the coarsest level (dx = {coarse}) takes fewer than 4 steps to c1 t/R = {}",
+                    self.end
+                ),
+            });
+        }
+        if let Profile::Flat { half_width } = self.profile {
+            if half_width < 2.0 * coarse {
+                return Err(ImpactError::Grid {
+                    name: "dx",
+                    reason: format!(
+                        "the flat punch (a = {half_width}) spans fewer than 2 cells of the coarsest level"
+                    ),
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Solves the case on `levels` grids (dx, 2 dx, ...). `progress` is called with the
+    /// fraction done.
+    pub fn solve(&self, mut progress: impl FnMut(f64)) -> Result<Solution> {
+        self.validate()?;
+        let hp = HalfPlane::from_poisson(self.poisson)?;
+        let m = *hp.m();
+        let s_r = *hp.s_r();
+        let mut tables = Tables::new(hp, self.kappa);
+        let motion = match &self.drive {
+            Drive::Free {
+                mass_ratio,
+                v0_over_c1,
+            } => Motion::Free {
+                mass: mass_ratio / (m * m),
+                v0: *v0_over_c1,
+            },
+            Drive::Speed(v) => Motion::DrivenSpeed(*v),
+            Drive::Table(t) => Motion::DrivenTable(t.clone()),
+        };
+        let mut runs = Vec::new();
+        // cost ~ steps^2: the finest level dominates; run coarse first
+        let total: f64 = (0..self.levels).map(|l| 0.25f64.powi(l as i32)).sum();
+        let mut done = 0.0;
+        for level in (0..self.levels).rev() {
+            let mut dx = self.dx * (1 << level) as f64;
+            if let Profile::Flat { half_width } = self.profile {
+                // cells 0..=N exactly cover [0, a]
+                let cells = (half_width / dx - 0.5).round().max(1.0);
+                dx = half_width / (cells + 0.5);
+            }
+            let mut march = March::new(
+                &mut tables,
+                &self.profile,
+                &motion,
+                self.law,
+                dx,
+                self.kappa,
+            );
+            let nsteps = (self.end / march.dt()).round() as usize;
+            let weight = 0.25f64.powi(level as i32) / total;
+            for n in 0..nsteps {
+                if !march.step()? {
+                    break;
+                }
+                if n % 64 == 0 {
+                    progress(done + weight * n as f64 / nsteps as f64);
+                }
+            }
+            done += weight;
+            runs.push(Run {
+                dx,
+                dt: march.dt(),
+                steps: std::mem::take(&mut march.steps),
+                separation: march.separation,
+            });
+        }
+        progress(1.0);
+        runs.reverse();
+        Ok(Solution {
+            case: self.clone(),
+            m,
+            s_r,
+            mass: match motion {
+                Motion::Free { mass, .. } => Some(mass),
+                _ => None,
+            },
+            runs,
+        })
+    }
+}
+
+/// One grid's history.
+#[derive(Clone, Debug)]
+pub struct Run {
+    /// Cell width (units R).
+    pub dx: f64,
+    /// Time step (units R/c1).
+    pub dt: f64,
+    /// The steps.
+    pub steps: Vec<StepState>,
+    /// Separation time (free striker), if any.
+    pub separation: Option<f64>,
+}
+
+/// The edge's speed range.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// |db/dt| > c1.
+    Supersonic,
+    /// c2 < |db/dt| < c1.
+    Transonic,
+    /// c_R < |db/dt| < c2.
+    RayleighShear,
+    /// |db/dt| < c_R.
+    SubRayleigh,
+}
+
+impl Stage {
+    /// `supersonic`, `transonic`, `rayleigh-shear` or `sub-rayleigh`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Supersonic => "supersonic",
+            Stage::Transonic => "transonic",
+            Stage::RayleighShear => "rayleigh-shear",
+            Stage::SubRayleigh => "sub-rayleigh",
+        }
+    }
+}
+
+/// A value with its absolute error estimate (from refinement; `None` with one level).
+#[derive(Clone, Copy, Debug)]
+pub struct Value {
+    /// The finest grid's value.
+    pub value: f64,
+    /// Absolute error estimate.
+    pub err: Option<f64>,
+}
+
+/// One row of the reported history (dimensionless).
+#[derive(Clone, Debug)]
+pub struct HistoryRow {
+    /// c1 t/R.
+    pub t: f64,
+    /// h/R.
+    pub h: Value,
+    /// (dh/dt)/c1.
+    pub hdot: Value,
+    /// b/R.
+    pub b: Value,
+    /// (db/dt)/c1 (central difference of b over the reporting interval).
+    pub bdot: f64,
+    /// The edge's speed range.
+    pub stage: Stage,
+    /// R(t)/(rho c1^2 R).
+    pub force: Value,
+    /// Striker kinetic energy over rho c1^2 R^2 (free striker).
+    pub kinetic: Option<Value>,
+    /// Work done on the half-plane over rho c1^2 R^2, through the kernels.
+    pub work: Value,
+}
+
+/// The observed convergence order of each quantity.
+#[derive(Clone, Debug)]
+pub struct Orders {
+    /// Order of h.
+    pub h: Option<f64>,
+    /// Order of b.
+    pub b: Option<f64>,
+    /// Order of the force.
+    pub force: Option<f64>,
+}
+
+/// A solved case.
+#[derive(Clone, Debug)]
+pub struct Solution {
+    /// The inputs.
+    pub case: ImpactCase,
+    /// c2/c1.
+    pub m: f64,
+    /// c_R/c1.
+    pub s_r: f64,
+    mass: Option<f64>,
+    /// The runs, finest first.
+    pub runs: Vec<Run>,
+}
+
+fn order(fine: &[f64], mid: &[f64], coarse: &[f64]) -> Option<f64> {
+    let d1: f64 = fine.iter().zip(mid).map(|(a, b)| (a - b).abs()).sum();
+    let d2: f64 = mid.iter().zip(coarse).map(|(a, b)| (a - b).abs()).sum();
+    (d1 > 0.0 && d2 > 0.0).then(|| (d2 / d1).log2())
+}
+
+impl Solution {
+    /// The reporting interval: the coarsest level's time step (its times are steps of every
+    /// level).
+    pub fn report_dt(&self) -> f64 {
+        self.runs.last().map(|r| r.dt).unwrap_or(0.0)
+    }
+
+    /// Separation time c1 t/R of the finest grid, with the spread over the levels as its
+    /// error estimate.
+    pub fn separation(&self) -> Option<Value> {
+        let s0 = self.runs[0].separation?;
+        let err = self
+            .runs
+            .get(1)
+            .and_then(|r| r.separation)
+            .map(|s| (s - s0).abs().max(self.runs[0].dt));
+        Some(Value { value: s0, err })
+    }
+
+    fn sample(&self, run: &Run, t: f64, f: impl Fn(&StepState) -> f64) -> Option<f64> {
+        let n = (t / run.dt).round() as usize;
+        (n >= 1).then(|| run.steps.get(n - 1).map(&f)).flatten()
+    }
+
+    fn kinetic(&self, v: f64) -> Option<f64> {
+        // (1/2) m0 v^2 in units mu R^2 -> over rho c1^2 R^2 = (1/m^2)
+        self.mass.map(|mass| 0.5 * mass * v * v * self.m * self.m)
+    }
+
+    /// The reported history with error estimates, and the observed orders.
+    pub fn history(&self) -> (Vec<HistoryRow>, Orders) {
+        let m2 = self.m * self.m;
+        let dtr = self.report_dt();
+        let fine = &self.runs[0];
+        let last_t = fine.steps.last().map(|s| s.t).unwrap_or(0.0);
+        let nrep = (last_t / dtr + 1e-9).floor() as usize;
+        let times: Vec<f64> = (1..=nrep).map(|i| i as f64 * dtr).collect();
+        type Getter = fn(&StepState) -> f64;
+        let getters: [Getter; 4] = [|s| s.h, |s| s.v, |s| s.b, |s| s.force];
+        // samples[q][level][i]
+        let samples: Vec<Vec<Vec<f64>>> = getters
+            .iter()
+            .map(|g| {
+                self.runs
+                    .iter()
+                    .map(|r| {
+                        times
+                            .iter()
+                            .map(|&t| self.sample(r, t, g).unwrap_or(f64::NAN))
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect();
+        let usable = |q: usize| -> usize {
+            // times where every level has a value
+            samples[q]
+                .iter()
+                .map(|l| l.iter().take_while(|v| v.is_finite()).count())
+                .min()
+                .unwrap_or(0)
+        };
+        let nuse = usable(0);
+        let ords: Vec<Option<f64>> = (0..4)
+            .map(|q| {
+                if self.runs.len() < 3 {
+                    return None;
+                }
+                let s = &samples[q];
+                order(&s[0][..nuse], &s[1][..nuse], &s[2][..nuse])
+            })
+            .collect();
+        let est = |q: usize, i: usize| -> Option<f64> {
+            if self.runs.len() < 2 {
+                return None;
+            }
+            let d = (samples[q][0][i] - samples[q][1][i]).abs();
+            if !d.is_finite() {
+                return None;
+            }
+            // Richardson with the observed order, never below the last difference
+            let factor = ords[q]
+                .filter(|p| *p > 0.0)
+                .map(|p| (1.0 / (2f64.powf(p) - 1.0)).max(1.0))
+                .unwrap_or(1.0);
+            Some(d * factor)
+        };
+        let mut rows = Vec::with_capacity(times.len());
+        for (i, &t) in times.iter().enumerate() {
+            let st = &fine.steps[(t / fine.dt).round() as usize - 1];
+            let val = |q: usize, scale: f64| Value {
+                value: samples[q][0][i] * scale,
+                err: if i < nuse {
+                    est(q, i).map(|e| e * scale)
+                } else {
+                    None
+                },
+            };
+            let bdot = {
+                let b = |j: usize| samples[2][0][j];
+                let (a, c) = (i.saturating_sub(1), (i + 1).min(times.len() - 1));
+                if c > a {
+                    (b(c) - b(a)) / (times[c] - times[a])
+                } else {
+                    0.0
+                }
+            };
+            let speed = bdot.abs();
+            let stage = if speed > 1.0 {
+                Stage::Supersonic
+            } else if speed > self.m {
+                Stage::Transonic
+            } else if speed > self.s_r {
+                Stage::RayleighShear
+            } else {
+                Stage::SubRayleigh
+            };
+            let hdot_scale = match self.case.drive {
+                Drive::Free { v0_over_c1, .. } => 1.0 / v0_over_c1,
+                _ => 1.0,
+            };
+            let kinetic = self.kinetic(st.v).map(|k| {
+                let e = est(1, i).map(|dv| self.mass.unwrap() * st.v.abs() * dv * m2);
+                Value {
+                    value: k,
+                    err: if i < nuse { e } else { None },
+                }
+            });
+            let work = Value {
+                value: st.work * m2,
+                err: kinetic.and_then(|k| k.err),
+            };
+            rows.push(HistoryRow {
+                t,
+                h: val(0, 1.0),
+                hdot: val(1, hdot_scale),
+                b: val(2, 1.0),
+                bdot,
+                stage,
+                force: val(3, m2),
+                kinetic,
+                work,
+            });
+        }
+        (
+            rows,
+            Orders {
+                h: ords[0],
+                b: ords[2],
+                force: ords[3],
+            },
+        )
+    }
+
+    /// Pressure profile p/(rho c1^2) at the finest grid's step nearest to c1 t/R = `t`:
+    /// (the step's time, the cell centres x/R, the pressures).
+    pub fn pressure_at(&self, t: f64) -> Option<(f64, Vec<f64>, Vec<f64>)> {
+        let fine = &self.runs[0];
+        let n = ((t / fine.dt).round() as usize).clamp(1, fine.steps.len());
+        let st = fine.steps.get(n - 1)?;
+        let m2 = self.m * self.m;
+        let x = (0..st.pressure.len()).map(|j| j as f64 * fine.dx).collect();
+        let p = st.pressure.iter().map(|v| v * m2).collect();
+        Some((st.t, x, p))
+    }
+
+    /// Peak force over rho c1^2 R and its time, on the finest grid.
+    pub fn peak_force(&self) -> Option<(f64, f64)> {
+        let m2 = self.m * self.m;
+        self.runs[0]
+            .steps
+            .iter()
+            .max_by(|a, b| a.force.total_cmp(&b.force))
+            .map(|s| (s.force * m2, s.t))
+    }
+}

@@ -1,0 +1,22 @@
+//! Transient impact of a rigid striker on an elastic half-plane (plane strain), the second
+//! reference paper's eqs (3)-(8) with G0 = 0: the contact integral equation (7) marched in
+//! time on a uniform space-time grid whose influence coefficients are the Lamb crate's
+//! closed-form cell integrals, the striker's equation of motion (5)/(8), two edge laws
+//! (`kinematic`, eq (4); `signorini`, the unilateral conditions), the history reported with
+//! error estimates from grid refinement. Derivations and the method's limits: `docs/impact.md`.
+//!
+//! Dimensionless variables (R the profile's length scale): x/R, c1 t/R, h/R, V0/c1,
+//! m0/(rho R^2), c2/c1; pressure over rho c1^2, force per unit length over rho c1^2 R.
+#![warn(missing_docs)]
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod case;
+pub mod error;
+pub mod march;
+pub mod profile;
+pub mod tables;
+
+pub use case::{Drive, HistoryRow, ImpactCase, Solution, Stage, Value};
+pub use error::{ImpactError, Result};
+pub use march::EdgeLaw;
+pub use profile::Profile;

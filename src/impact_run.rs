@@ -1,0 +1,468 @@
+//! `impact run`: a rigid striker's transient impact on the half-plane (crate `impact`).
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use std::io::Write;
+
+use clap::Args;
+use impact::{Drive, EdgeLaw, ImpactCase, Profile, Solution, Value as Est};
+use serde_json::{json, Map, Value};
+
+/// Arguments of `impact run`.
+#[derive(Args, Debug)]
+pub struct RunArgs {
+    /// P-wave speed c1 in m/s (with --c2).
+    #[arg(long, allow_hyphen_values = true)]
+    c1: Option<f64>,
+    /// S-wave speed c2 in m/s (with --c1).
+    #[arg(long, allow_hyphen_values = true)]
+    c2: Option<f64>,
+    /// Poisson's ratio nu in (-1, 1/2), nu != 0 (instead of --c1, --c2).
+    #[arg(long, allow_hyphen_values = true)]
+    poisson: Option<f64>,
+    /// The striker: `rigid` (elastic and shell strikers are not available yet).
+    #[arg(long, default_value = "rigid")]
+    striker: String,
+    /// The profile: circle:R=.., parabola:R=.., power:A=..,k=.., wedge:theta_deg=..,
+    /// flat:a=.., table:FILE (two columns x f in metres, from x = 0).
+    #[arg(long)]
+    profile: String,
+    /// m0/(rho R^2), the striker's mass per unit length (free striker).
+    #[arg(long, allow_hyphen_values = true)]
+    mass_ratio: Option<f64>,
+    /// V0/c1, the initial speed (free striker).
+    #[arg(long, allow_hyphen_values = true)]
+    v0_over_c1: Option<f64>,
+    /// Prescribed penetration instead of the equation of motion: speed:V_over_c1=.. or
+    /// table:FILE (two columns c1 t/R, h/R from (0, 0)).
+    #[arg(long)]
+    driven: Option<String>,
+    /// The edge law: signorini (unilateral conditions) or kinematic (eq (4), f(b) = h).
+    #[arg(long, default_value = "signorini")]
+    law: String,
+    /// End time, c1t/R=VALUE.
+    #[arg(long)]
+    end: String,
+    /// The length scale R in metres for the flat punch, the wedge and the power law (the
+    /// radius for the circle and the parabola).
+    #[arg(long, allow_hyphen_values = true)]
+    length: Option<f64>,
+    /// Cell width dx/R of the finest grid.
+    #[arg(long, default_value_t = 0.005, allow_hyphen_values = true)]
+    dx: f64,
+    /// kappa = c1 dt/dx, at least 2.
+    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+    kappa: f64,
+    /// Refinement levels for the error estimates (1 to 4).
+    #[arg(long, default_value_t = 3)]
+    levels: usize,
+    /// Pressure profiles at these times: c1t/R=T1,T2,...
+    #[arg(long)]
+    pressure_at: Option<String>,
+    /// JSON output (default: CSV with `#` headers).
+    #[arg(long)]
+    json: bool,
+}
+
+type R<T> = std::result::Result<T, String>;
+
+fn kv(spec: &str, what: &str) -> R<Vec<(String, f64)>> {
+    spec.split(',')
+        .map(|item| {
+            let (k, v) = item
+                .split_once('=')
+                .ok_or_else(|| format!("invalid {what} {spec:?}: write key=value pairs"))?;
+            let v: f64 = v
+                .trim()
+                .parse()
+                .map_err(|_| format!("invalid {what} value {v:?} for {k}: not a number"))?;
+            if !v.is_finite() {
+                return Err(format!("invalid {what} value {v} for {k}: must be finite"));
+            }
+            Ok((k.trim().to_string(), v))
+        })
+        .collect()
+}
+
+fn one(pairs: &[(String, f64)], key: &str, what: &str) -> R<f64> {
+    if pairs.len() != 1 || pairs[0].0 != key {
+        return Err(format!("invalid {what}: expected exactly {key}=VALUE"));
+    }
+    Ok(pairs[0].1)
+}
+
+fn read_table(path: &str, what: &str) -> R<Vec<(f64, f64)>> {
+    let text =
+        std::fs::read_to_string(path).map_err(|e| format!("cannot read {what} {path}: {e}"))?;
+    let mut rows = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() || line.starts_with('#') {
+            continue;
+        }
+        let nums: Vec<f64> = line
+            .split(|c: char| c == ',' || c.is_whitespace())
+            .filter(|s| !s.is_empty())
+            .map(|s| s.parse::<f64>())
+            .collect::<std::result::Result<_, _>>()
+            .map_err(|_| format!("invalid {what} {path}, line {}: two numbers", i + 1))?;
+        if nums.len() != 2 {
+            return Err(format!(
+                "invalid {what} {path}, line {}: two numbers",
+                i + 1
+            ));
+        }
+        rows.push((nums[0], nums[1]));
+    }
+    Ok(rows)
+}
+
+fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
+    let (kind, rest) = spec.split_once(':').ok_or_else(|| {
+        format!("invalid --profile {spec:?}: write kind:parameters, e.g. circle:R=1")
+    })?;
+    let scale = length.unwrap_or(1.0);
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(format!(
+            "invalid --length = {scale}: admissible range is (0, inf) m"
+        ));
+    }
+    let radius_only = |what: &str| -> R<()> {
+        if length.is_some() {
+            return Err(format!(
+                "contradictory flags: --length with --profile {what} (R is the radius)"
+            ));
+        }
+        Ok(())
+    };
+    Ok(match kind {
+        "circle" | "parabola" => {
+            radius_only(kind)?;
+            let r = one(&kv(rest, "--profile")?, "R", "--profile")?;
+            if !(r > 0.0) {
+                return Err(format!(
+                    "invalid profile radius R = {r}: admissible range is (0, inf) m"
+                ));
+            }
+            // R is the unit of length
+            if kind == "circle" {
+                Profile::Circle { radius: 1.0 }
+            } else {
+                Profile::Parabola { radius: 1.0 }
+            }
+        }
+        "power" => {
+            let p = kv(rest, "--profile")?;
+            let get = |k: &str| {
+                p.iter()
+                    .find(|(n, _)| n == k)
+                    .map(|x| x.1)
+                    .ok_or_else(|| format!("invalid --profile {spec:?}: power needs A=..,k=.."))
+            };
+            let (a, k) = (get("A")?, get("k")?);
+            // f/R = A R^(k-1) (x/R)^k
+            Profile::Power {
+                a: a * scale.powf(k - 1.0),
+                k,
+            }
+        }
+        "wedge" => Profile::Wedge {
+            theta_deg: one(&kv(rest, "--profile")?, "theta_deg", "--profile")?,
+        },
+        "flat" => Profile::Flat {
+            half_width: one(&kv(rest, "--profile")?, "a", "--profile")? / scale,
+        },
+        "table" => {
+            let t = read_table(rest, "profile table")?;
+            Profile::Table(std::sync::Arc::new(
+                t.into_iter().map(|(x, f)| (x / scale, f / scale)).collect(),
+            ))
+        }
+        other => return Err(format!(
+            "invalid --profile kind {other:?}: one of circle, parabola, power, wedge, flat, table"
+        )),
+    })
+}
+
+fn poisson(a: &RunArgs) -> R<f64> {
+    match (a.c1, a.c2, a.poisson) {
+        (None, None, Some(nu)) => Ok(nu),
+        (Some(c1), Some(c2), None) => {
+            if !(c1 > 0.0 && c2 > 0.0 && c1.is_finite() && c2.is_finite()) {
+                return Err(format!(
+                    "invalid --c1, --c2 = {c1}, {c2}: wave speeds must be > 0 m/s"
+                ));
+            }
+            let m2 = (c2 / c1).powi(2);
+            if !(m2 < 0.75) {
+                return Err(format!(
+                    "invalid c2/c1 = {}: admissible range is (0, sqrt(3)/2)",
+                    c2 / c1
+                ));
+            }
+            Ok((1.0 - 2.0 * m2) / (2.0 * (1.0 - m2)))
+        }
+        (None, None, None) => {
+            Err("missing material: give --poisson NU, or --c1 and --c2 (m/s)".into())
+        }
+        (_, _, Some(_)) => {
+            Err("contradictory material: give either --poisson or --c1 and --c2, not both".into())
+        }
+        _ => Err("incomplete material: --c1 and --c2 go together (m/s)".into()),
+    }
+}
+
+fn time_list(spec: &str, flag: &str) -> R<Vec<f64>> {
+    let rest = spec
+        .strip_prefix("c1t/R=")
+        .ok_or_else(|| format!("invalid {flag} {spec:?}: write c1t/R=VALUE[,VALUE...]"))?;
+    rest.split(',')
+        .map(|s| {
+            s.trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| format!("invalid {flag} value {s:?}: not a finite number"))
+        })
+        .collect()
+}
+
+/// Builds the case from the arguments.
+pub fn case(a: &RunArgs) -> R<ImpactCase> {
+    if a.striker != "rigid" {
+        return Err(format!(
+            "invalid --striker {:?}: only rigid strikers are available",
+            a.striker
+        ));
+    }
+    let nu = poisson(a)?;
+    let prof = profile(&a.profile, a.length)?;
+    let law = match a.law.as_str() {
+        "signorini" => EdgeLaw::Signorini,
+        "kinematic" => EdgeLaw::Kinematic,
+        other => return Err(format!("invalid --law {other:?}: signorini or kinematic")),
+    };
+    let end = time_list(&a.end, "--end")?;
+    if end.len() != 1 {
+        return Err("invalid --end: one time, c1t/R=VALUE".into());
+    }
+    let drive = match (&a.driven, a.mass_ratio, a.v0_over_c1) {
+        (Some(_), Some(_), _) | (Some(_), _, Some(_)) => {
+            return Err(
+                "contradictory flags: --driven replaces --mass-ratio and --v0-over-c1".into(),
+            )
+        }
+        (Some(d), None, None) => {
+            if let Some(rest) = d.strip_prefix("speed:") {
+                Drive::Speed(one(&kv(rest, "--driven")?, "V_over_c1", "--driven")?)
+            } else if let Some(path) = d.strip_prefix("table:") {
+                Drive::Table(read_table(path, "driven table")?)
+            } else {
+                return Err(format!(
+                    "invalid --driven {d:?}: speed:V_over_c1=.. or table:FILE"
+                ));
+            }
+        }
+        (None, Some(m), Some(v)) => Drive::Free {
+            mass_ratio: m,
+            v0_over_c1: v,
+        },
+        (None, None, _) => return Err("missing --mass-ratio (or --driven)".into()),
+        (None, _, None) => return Err("missing --v0-over-c1 (or --driven)".into()),
+    };
+    let mut c = ImpactCase::new(nu, prof, drive, law, end[0]);
+    c.dx = a.dx;
+    c.kappa = a.kappa;
+    c.levels = a.levels;
+    Ok(c)
+}
+
+fn est(v: &Est) -> (Value, Value) {
+    (
+        json!(v.value),
+        v.err.map(|e| json!(e)).unwrap_or(Value::Null),
+    )
+}
+
+/// The report as JSON.
+pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
+    let (rows, orders) = sol.history();
+    let driven = !matches!(sol.case.drive, Drive::Free { .. });
+    let hdot_key = if driven {
+        "hdot_over_c1"
+    } else {
+        "hdot_over_v0"
+    };
+    let mut out = Map::new();
+    out.insert("version".into(), json!(version));
+    out.insert("law".into(), json!(sol.case.law.name()));
+    out.insert("striker".into(), json!("rigid"));
+    out.insert("profile".into(), json!(sol.case.profile.label()));
+    out.insert("poisson".into(), json!(sol.case.poisson));
+    out.insert("c2_over_c1".into(), json!(sol.m));
+    out.insert("cR_over_c1".into(), json!(sol.s_r));
+    out.insert(
+        "grid".into(),
+        json!({"dx_over_R": sol.runs[0].dx, "c1dt_over_R": sol.runs[0].dt, "kappa": sol.case.kappa, "levels": sol.runs.len()}),
+    );
+    let mut errs = Map::new();
+    let mut col = |key: &str, vals: Vec<(Value, Value)>| {
+        let (v, e): (Vec<Value>, Vec<Value>) = vals.into_iter().unzip();
+        out.insert(key.into(), Value::Array(v));
+        errs.insert(key.into(), Value::Array(e));
+    };
+    col("h_over_R", rows.iter().map(|r| est(&r.h)).collect());
+    col(hdot_key, rows.iter().map(|r| est(&r.hdot)).collect());
+    col("b_over_R", rows.iter().map(|r| est(&r.b)).collect());
+    col(
+        "force_over_rho_c1sq_R",
+        rows.iter().map(|r| est(&r.force)).collect(),
+    );
+    if !driven {
+        col(
+            "kinetic_energy_over_rho_c1sq_Rsq",
+            rows.iter()
+                .map(|r| est(&r.kinetic.expect("free striker")))
+                .collect(),
+        );
+    }
+    col(
+        "work_over_rho_c1sq_Rsq",
+        rows.iter().map(|r| est(&r.work)).collect(),
+    );
+    out.insert(
+        "c1t_over_R".into(),
+        Value::Array(rows.iter().map(|r| json!(r.t)).collect()),
+    );
+    out.insert(
+        "bdot_over_c1".into(),
+        Value::Array(rows.iter().map(|r| json!(r.bdot)).collect()),
+    );
+    out.insert(
+        "stage".into(),
+        Value::Array(rows.iter().map(|r| json!(r.stage.name())).collect()),
+    );
+    out.insert("error_estimate".into(), Value::Object(errs));
+    out.insert(
+        "observed_order".into(),
+        json!({"h_over_R": orders.h, "b_over_R": orders.b, "force_over_rho_c1sq_R": orders.force}),
+    );
+    if let Some((f, t)) = sol.peak_force() {
+        out.insert(
+            "peak_force".into(),
+            json!({"force_over_rho_c1sq_R": f, "c1t_over_R": t}),
+        );
+    }
+    out.insert(
+        "separation_c1t_over_R".into(),
+        match sol.separation() {
+            Some(s) => json!({"value": s.value, "error_estimate": s.err}),
+            None => Value::Null,
+        },
+    );
+    if let Some(spec) = &a.pressure_at {
+        let mut list = Vec::new();
+        for t in time_list(spec, "--pressure-at")? {
+            if !(t > 0.0) {
+                return Err(format!(
+                    "invalid --pressure-at time {t}: admissible range is (0, end]"
+                ));
+            }
+            if let Some((ts, x, p)) = sol.pressure_at(t) {
+                list.push(json!({"c1t_over_R": ts, "x_over_R": x, "p_over_rho_c1sq": p}));
+            }
+        }
+        out.insert("pressure".into(), Value::Array(list));
+    }
+    Ok(Value::Object(out))
+}
+
+/// CSV with `#` headers: one row per reported time, then the pressure profiles.
+pub fn csv(v: &Value, cmdline: &str) -> String {
+    let mut s = String::new();
+    s.push_str(&format!(
+        "# impact run {}\n",
+        v["version"].as_str().unwrap_or("")
+    ));
+    s.push_str(&format!("# command: {cmdline}\n"));
+    s.push_str(&format!(
+        "# law: {}; profile: {}; poisson: {}; grid: {}\n",
+        v["law"].as_str().unwrap_or(""),
+        v["profile"].as_str().unwrap_or(""),
+        v["poisson"],
+        v["grid"]
+    ));
+    s.push_str("# dimensionless: x/R, c1 t/R, h/R, speeds over c1 (hdot over V0 for a free striker), force over rho c1^2 R, energies over rho c1^2 R^2; err_* are absolute error estimates\n");
+    let keys: Vec<&str> = [
+        "c1t_over_R",
+        "h_over_R",
+        "hdot_over_v0",
+        "hdot_over_c1",
+        "b_over_R",
+        "bdot_over_c1",
+        "stage",
+        "force_over_rho_c1sq_R",
+        "kinetic_energy_over_rho_c1sq_Rsq",
+        "work_over_rho_c1sq_Rsq",
+    ]
+    .into_iter()
+    .filter(|k| v.get(*k).is_some())
+    .collect();
+    let err_keys: Vec<&str> = keys
+        .iter()
+        .copied()
+        .filter(|k| v["error_estimate"].get(*k).is_some())
+        .collect();
+    let mut head: Vec<String> = keys.iter().map(|k| k.to_string()).collect();
+    head.extend(err_keys.iter().map(|k| format!("err_{k}")));
+    s.push_str(&head.join(","));
+    s.push('\n');
+    let n = v["c1t_over_R"].as_array().map(|a| a.len()).unwrap_or(0);
+    let field = |x: &Value| match x {
+        Value::Null => String::new(),
+        Value::String(t) => t.clone(),
+        other => other.to_string(),
+    };
+    for i in 0..n {
+        let mut line: Vec<String> = keys.iter().map(|k| field(&v[*k][i])).collect();
+        line.extend(err_keys.iter().map(|k| field(&v["error_estimate"][*k][i])));
+        s.push_str(&line.join(","));
+        s.push('\n');
+    }
+    if let Some(list) = v["pressure"].as_array() {
+        for p in list {
+            s.push_str(&format!(
+                "# pressure at c1t/R = {}\nx_over_R,p_over_rho_c1sq\n",
+                p["c1t_over_R"]
+            ));
+            let xs = p["x_over_R"].as_array().cloned().unwrap_or_default();
+            let ps = p["p_over_rho_c1sq"].as_array().cloned().unwrap_or_default();
+            for (x, q) in xs.iter().zip(&ps) {
+                s.push_str(&format!("{x},{q}\n"));
+            }
+        }
+    }
+    s
+}
+
+/// Runs the subcommand.
+pub fn run(a: &RunArgs, version: &str) -> R<()> {
+    let c = case(a)?;
+    let bar = indicatif::ProgressBar::new(1000);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {percent}% {elapsed}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let sol = c
+        .solve(|f| bar.set_position((f * 1000.0) as u64))
+        .map_err(|e| e.to_string())?;
+    bar.finish_and_clear();
+    let v = report(a, &sol, version)?;
+    let text = if a.json {
+        serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
+    } else {
+        let cmdline: Vec<String> = std::env::args().collect();
+        csv(&v, &cmdline.join(" "))
+    };
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+    Ok(())
+}
