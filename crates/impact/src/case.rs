@@ -408,7 +408,16 @@ impl Solution {
             if self.runs.len() < 2 {
                 return None;
             }
-            let d = (samples[q][0][i] - samples[q][1][i]).abs();
+            // the level differences over the neighbouring report times, and the coarser
+            // pair scaled down by first order: the contact set moves cell by cell, so a
+            // difference may happen to be small at one time
+            let mut d: f64 = 0.0;
+            for j in i.saturating_sub(4)..(i + 5).min(nuse.max(i + 1)) {
+                d = d.max((samples[q][0][j] - samples[q][1][j]).abs());
+                if let Some(c) = samples[q].get(2) {
+                    d = d.max(0.5 * (samples[q][1][j] - c[j]).abs());
+                }
+            }
             if !d.is_finite() {
                 return None;
             }
@@ -417,7 +426,8 @@ impl Solution {
                 .filter(|p| *p > 0.0)
                 .map(|p| (1.0 / (2f64.powf(p) - 1.0)).max(1.0))
                 .unwrap_or(1.0);
-            Some(d * factor)
+            // safety factor 4: the contact set moves cell by cell, the error is not smooth
+            Some(4.0 * d * factor)
         };
         let mut rows = Vec::with_capacity(times.len());
         for (i, &t) in times.iter().enumerate() {

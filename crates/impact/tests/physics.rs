@@ -1,0 +1,283 @@
+//! Physics checks of the rigid-striker impact engine, each against an independent quantity:
+//! the exact plane-wave pressure of a driven flat punch, the one-dimensional acoustic limit at
+//! first contact, the energy balance through the kernels, the 2-D Hertz relation in the
+//! quasi-static limit, convergence under refinement with the stated error estimates.
+
+use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile};
+
+fn m2(nu: f64) -> f64 {
+    (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
+}
+
+/// A driven flat punch: wherever the P waves of both edges have not arrived, the pressure is
+/// exactly rho c1 V (a plane wave), in every step.
+#[test]
+fn driven_flat_punch_plane_wave_region_is_exact() {
+    let nu = 0.3;
+    let v = 0.01;
+    let mut case = ImpactCase::new(
+        nu,
+        Profile::Flat { half_width: 1.0 },
+        Drive::Speed(v),
+        EdgeLaw::Signorini,
+        1.4,
+    );
+    case.dx = 0.0125;
+    case.levels = 1;
+    let sol = case.solve(|_| {}).unwrap();
+    let run = &sol.runs[0];
+    let a = 1.0;
+    let mut checked = 0;
+    for st in &run.steps {
+        for (j, p) in st.pressure.iter().enumerate() {
+            let x = j as f64 * run.dx;
+            // the edge's cell acts from a - dx on (margin: the edge pressure is large, and the
+            // solve's rounding scales with it)
+            if a - x > st.t + 12.0 * run.dx {
+                let rel = p * m2(nu) / v - 1.0;
+                assert!(
+                    rel.abs() < 1e-10,
+                    "t = {}, x = {x}: p/(rho c1 V) - 1 = {rel:e}",
+                    st.t
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 200, "only {checked} cells checked");
+    // and the edges do change the pressure once their waves arrive
+    let last = run.steps.last().unwrap();
+    assert!((last.pressure[0] * m2(nu) / v - 1.0).abs() > 1e-4);
+}
+
+fn free_parabola(nu: f64, mass_ratio: f64, v0: f64, end: f64, dx: f64) -> ImpactCase {
+    let mut case = ImpactCase::new(
+        nu,
+        Profile::Parabola { radius: 1.0 },
+        Drive::Free {
+            mass_ratio,
+            v0_over_c1: v0,
+        },
+        EdgeLaw::Signorini,
+        end,
+    );
+    case.dx = dx;
+    case
+}
+
+/// The supersonic start: the contact pressure at the centre tends to the 1-D acoustic value
+/// rho c1 dh/dt, with a correction that vanishes linearly as t -> 0.
+#[test]
+fn supersonic_start_tends_to_the_acoustic_pressure() {
+    let nu = 0.25;
+    let v0 = 0.1;
+    let mut case = free_parabola(nu, 10.0, v0, 0.04, 0.0005);
+    case.levels = 1;
+    let sol = case.solve(|_| {}).unwrap();
+    let run = &sol.runs[0];
+    let ratio = |n: usize| {
+        let st = &run.steps[n - 1];
+        // the centre's pressure over rho c1 times the speed at mid-step
+        let prev_v = if n > 1 { run.steps[n - 2].v } else { v0 };
+        st.pressure[0] * m2(nu) / (0.5 * (st.v + prev_v))
+    };
+    let d = |n: usize| ratio(n) - 1.0;
+    // well inside the supersonic stage (b > c1 t + a few cells)
+    let (n1, n2) = (10, 20);
+    let (t1, t2) = (run.steps[n1 - 1].t, run.steps[n2 - 1].t);
+    assert!(run.steps[n2 - 1].b > t2 + 4.0 * run.dx);
+    assert!(
+        d(n1).abs() < 0.01,
+        "p/(rho c1 v) - 1 = {} at t = {t1}",
+        d(n1)
+    );
+    // linear in t: the deviation doubles with t (to 20 percent)
+    let slope_ratio = (d(n2) / t2) / (d(n1) / t1);
+    assert!(
+        (slope_ratio - 1.0).abs() < 0.2,
+        "deviations {} at t = {t1}, {} at t = {t2}",
+        d(n1),
+        d(n2)
+    );
+}
+
+/// Energy: the striker's lost kinetic energy equals the work of the contact pressure on the
+/// surface computed through the kernels, to the grid's accuracy, better on a finer grid.
+#[test]
+fn energy_balance_through_the_kernels() {
+    let gaps: Vec<f64> = [0.02, 0.01]
+        .iter()
+        .map(|&dx| {
+            let mut case = free_parabola(0.3, 10.0, 0.01, 6.0, dx);
+            case.levels = 1;
+            let sol = case.solve(|_| {}).unwrap();
+            let (rows, _) = sol.history();
+            let ke0 = 0.5 * 10.0 * 0.01f64.powi(2);
+            rows.iter()
+                .map(|r| (ke0 - r.kinetic.unwrap().value - r.work.value).abs() / ke0)
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    assert!(gaps[1] < 2e-3, "energy gaps {gaps:?}");
+    assert!(gaps[1] < gaps[0], "energy gaps {gaps:?}");
+}
+
+/// Quasi-static limit: near the peak force (db/dt ~ 0) the force and the contact half-width
+/// follow the 2-D Hertz relation R = pi E* b^2/(4 R_c), E* = E/(1 - nu^2) = 2 mu/(1 - nu); the
+/// deviation shrinks with the impact speed.
+#[test]
+fn quasi_static_limit_is_hertz() {
+    let nu = 0.3;
+    let dev: Vec<f64> = [(0.01, 10.0, 10.0), (0.003, 10.0, 30.0)]
+        .iter()
+        .map(|&(v0, mass, end)| {
+            let case = {
+                let mut c = free_parabola(nu, mass, v0, end, 0.004);
+                c.kappa = 2.0;
+                c.levels = 2;
+                c
+            };
+            let sol = case.solve(|_| {}).unwrap();
+            let (rows, _) = sol.history();
+            let peak = rows
+                .iter()
+                .max_by(|a, b| a.force.value.total_cmp(&b.force.value))
+                .unwrap();
+            // force over rho c1^2 R; Hertz: pi E* b^2/(4 R) over rho c1^2 R = m^2 pi b^2/(2 (1 - nu))
+            let hertz = m2(nu) * std::f64::consts::PI * peak.b.value.powi(2) / (2.0 * (1.0 - nu));
+            peak.force.value / hertz - 1.0
+        })
+        .collect();
+    assert!(dev[0].abs() < 0.03, "deviations from Hertz {dev:?}");
+    assert!(
+        dev[1].abs() < dev[0].abs() + 0.005,
+        "deviations from Hertz {dev:?}"
+    );
+}
+
+/// Convergence: the observed order of h and R is about one (the method's order: pressure
+/// constant per cell and step), and halving the cells changes h, R by less than the error
+/// estimate stated on the coarser grid.
+#[test]
+fn refinement_converges_within_the_stated_errors() {
+    let solve = |dx: f64| {
+        let case = free_parabola(0.3, 10.0, 0.01, 3.0, dx);
+        case.solve(|_| {}).unwrap()
+    };
+    let coarse = solve(0.01);
+    let fine = solve(0.005);
+    let (rc, oc) = coarse.history();
+    let (rf, _) = fine.history();
+    for o in [oc.h, oc.force] {
+        let o = o.expect("three levels give an order");
+        assert!(o > 0.7 && o < 3.0, "observed order {o}");
+    }
+    let mut checked = 0;
+    for r in &rc {
+        if let Some(f) = rf.iter().find(|x| (x.t - r.t).abs() < 1e-9) {
+            for (c, fv) in [(r.h, f.h), (r.force, f.force)] {
+                let err = c.err.unwrap();
+                assert!(
+                    (c.value - fv.value).abs() <= err + 1e-14,
+                    "t = {}: change {} against stated {} (value {})",
+                    r.t,
+                    (c.value - fv.value).abs(),
+                    err,
+                    c.value
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 10);
+}
+
+/// The kinematic law (eq (4)) puts the edge at f(b) = h; the Signorini edge lies inside it
+/// once the edge is slower than c1.
+#[test]
+fn kinematic_edge_is_geometric_and_wider() {
+    let mut case = free_parabola(0.25, 10.0, 0.01, 2.0, 0.01);
+    case.levels = 1;
+    let sig = case.solve(|_| {}).unwrap();
+    case.law = EdgeLaw::Kinematic;
+    let kin = case.solve(|_| {}).unwrap();
+    let (rs, _) = sig.history();
+    let (rk, _) = kin.history();
+    let last_k = rk.last().unwrap();
+    assert!(((2.0 * last_k.h.value).sqrt() - last_k.b.value).abs() < 1e-12);
+    assert!(rs.last().unwrap().b.value < last_k.b.value * 0.9);
+}
+
+#[test]
+fn bad_input_is_refused_with_the_parameter_named() {
+    let base = free_parabola(0.3, 10.0, 0.01, 1.0, 0.01);
+    let cases: Vec<(ImpactCase, &str)> = vec![
+        (
+            ImpactCase {
+                drive: Drive::Free {
+                    mass_ratio: 0.0,
+                    v0_over_c1: 0.01,
+                },
+                ..base.clone()
+            },
+            "mass ratio",
+        ),
+        (
+            ImpactCase {
+                drive: Drive::Free {
+                    mass_ratio: 1.0,
+                    v0_over_c1: -0.01,
+                },
+                ..base.clone()
+            },
+            "V0/c1",
+        ),
+        (
+            ImpactCase {
+                end: 0.0,
+                ..base.clone()
+            },
+            "end time",
+        ),
+        (
+            ImpactCase {
+                kappa: 1.0,
+                ..base.clone()
+            },
+            "kappa",
+        ),
+        (
+            ImpactCase {
+                profile: Profile::Power { a: 1.0, k: 0.5 },
+                ..base.clone()
+            },
+            "exponent k",
+        ),
+        (
+            ImpactCase {
+                profile: Profile::Table(std::sync::Arc::new(vec![
+                    (0.0, 0.0),
+                    (1.0, 1.0),
+                    (2.0, 1.5),
+                ])),
+                ..base.clone()
+            },
+            "profile table",
+        ),
+        (
+            ImpactCase {
+                poisson: 0.5,
+                ..base.clone()
+            },
+            "Poisson",
+        ),
+    ];
+    for (c, name) in cases {
+        let e = c.solve(|_| {}).unwrap_err();
+        assert!(e.to_string().contains(name), "{name}: {e}");
+        assert!(matches!(
+            e,
+            ImpactError::InvalidParameter { .. } | ImpactError::Lamb(_)
+        ));
+    }
+}
