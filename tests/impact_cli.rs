@@ -172,3 +172,137 @@ fn bad_input_exits_2_with_one_line_naming_the_parameter() {
         assert!(err.contains(word), "{args:?}: {err}");
     }
 }
+
+const RUN_BASE: [&str; 14] = [
+    "run",
+    "--poisson",
+    "0.25",
+    "--striker",
+    "rigid",
+    "--profile",
+    "circle:R=1",
+    "--mass-ratio",
+    "10",
+    "--v0-over-c1",
+    "0.01",
+    "--law",
+    "signorini",
+    "--json",
+];
+
+#[test]
+fn run_reports_histories_with_their_errors() {
+    let mut args = RUN_BASE.to_vec();
+    args.extend([
+        "--end",
+        "c1t/R=0.5",
+        "--dx",
+        "0.01",
+        "--pressure-at",
+        "c1t/R=0.4",
+    ]);
+    let v = json(&args);
+    assert_eq!(v["law"], "signorini");
+    let n = v["c1t_over_R"].as_array().unwrap().len();
+    assert!(n >= 4);
+    for key in [
+        "h_over_R",
+        "hdot_over_v0",
+        "b_over_R",
+        "bdot_over_c1",
+        "stage",
+        "force_over_rho_c1sq_R",
+    ] {
+        assert_eq!(v[key].as_array().unwrap().len(), n, "{key}");
+    }
+    for key in ["h_over_R", "b_over_R", "force_over_rho_c1sq_R"] {
+        let e = v["error_estimate"][key].as_array().unwrap();
+        assert!(e.iter().all(|x| num(x) >= 0.0), "{key}");
+    }
+    // early times: h = V0 t to first order
+    let t0 = num(&v["c1t_over_R"][0]);
+    let h0 = num(&v["h_over_R"][0]);
+    assert!((h0 / (0.01 * t0) - 1.0).abs() < 1e-3);
+    let p = &v["pressure"][0];
+    assert!(p["x_over_R"].as_array().unwrap().len() >= 3);
+    // the same run as CSV: a header and one row per time
+    let mut csv_args: Vec<&str> = args.iter().copied().filter(|a| *a != "--json").collect();
+    csv_args.truncate(csv_args.len() - 2);
+    let (code, out, _) = impact(&csv_args);
+    assert_eq!(code, 0);
+    assert!(out.starts_with("# impact run"));
+    let rows = out
+        .lines()
+        .filter(|l| !l.starts_with('#') && l.chars().next().is_some_and(|c| c.is_ascii_digit()))
+        .count();
+    assert_eq!(rows, n);
+}
+
+#[test]
+fn run_driven_flat_punch_gives_the_plane_wave_pressure() {
+    let v = json(&[
+        "run",
+        "--poisson",
+        "0.3",
+        "--profile",
+        "flat:a=1",
+        "--driven",
+        "speed:V_over_c1=0.01",
+        "--end",
+        "c1t/R=0.3",
+        "--dx",
+        "0.0125",
+        "--levels",
+        "1",
+        "--pressure-at",
+        "c1t/R=0.2",
+        "--json",
+    ]);
+    assert!(v["hdot_over_c1"].is_array());
+    let p = &v["pressure"][0]["p_over_rho_c1sq"];
+    // the centre is far from both edges: rho c1 V exactly
+    assert!((num(&p[0]) / 0.01 - 1.0).abs() < 1e-10);
+}
+
+#[test]
+fn run_refuses_bad_input_with_one_line() {
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["--mass-ratio", "0", "--end", "c1t/R=1"], "mass ratio"),
+        (vec!["--end", "c1t/R=0"], "end time"),
+        (vec!["--end", "c1t/R=1", "--kappa", "1"], "kappa"),
+        (
+            vec!["--end", "c1t/R=1", "--driven", "speed:V_over_c1=0.01"],
+            "contradictory",
+        ),
+        (vec!["--end", "t=1"], "--end"),
+    ];
+    for (extra, word) in cases {
+        let mut args: Vec<&str> = RUN_BASE.to_vec();
+        // later flags override: drop the base mass ratio when a case sets its own
+        if extra.contains(&"--mass-ratio") {
+            let i = args.iter().position(|a| *a == "--mass-ratio").unwrap();
+            args.drain(i..i + 2);
+        }
+        args.extend(extra);
+        let (code, out, err) = impact(&args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(out.is_empty());
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(word), "{word}: {err}");
+    }
+    let (code, _, err) = impact(&[
+        "run",
+        "--poisson",
+        "0.25",
+        "--profile",
+        "wedge:theta_deg=120",
+        "--mass-ratio",
+        "1",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "c1t/R=1",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("theta_deg"), "{err}");
+}
