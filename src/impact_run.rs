@@ -1,8 +1,6 @@
 //! `impact run`: a rigid striker's transient impact on the half-plane (crate `impact`).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use std::io::Write;
-
 use clap::Args;
 use impact::{Drive, EdgeLaw, ImpactCase, Profile, Solution, Value as Est};
 use serde_json::{json, Map, Value};
@@ -177,9 +175,11 @@ fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
                 t.into_iter().map(|(x, f)| (x / scale, f / scale)).collect(),
             ))
         }
-        other => return Err(format!(
+        other => {
+            return Err(format!(
             "invalid --profile kind {other:?}: one of circle, parabola, power, wedge, flat, table"
-        )),
+        ))
+        }
     })
 }
 
@@ -444,8 +444,8 @@ pub fn csv(v: &Value, cmdline: &str) -> String {
     s
 }
 
-/// Runs the subcommand.
-pub fn run(a: &RunArgs, version: &str) -> R<()> {
+/// Runs the subcommand: the report as JSON (the caller prints it, or its CSV form).
+pub fn run(a: &RunArgs, version: &str) -> R<Value> {
     let c = case(a)?;
     let bar = indicatif::ProgressBar::new(1000);
     bar.set_style(
@@ -456,13 +456,10 @@ pub fn run(a: &RunArgs, version: &str) -> R<()> {
         .solve(|f| bar.set_position((f * 1000.0) as u64))
         .map_err(|e| e.to_string())?;
     bar.finish_and_clear();
-    let v = report(a, &sol, version)?;
-    let text = if a.json {
-        serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
-    } else {
-        let cmdline: Vec<String> = std::env::args().collect();
-        csv(&v, &cmdline.join(" "))
-    };
-    let _ = std::io::stdout().lock().write_all(text.as_bytes());
-    Ok(())
+    report(a, &sol, version)
+}
+
+/// Whether JSON output was asked for.
+pub fn wants_json(a: &RunArgs) -> bool {
+    a.json
 }

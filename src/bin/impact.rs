@@ -317,6 +317,18 @@ fn csv(v: &Value, cmdline: &str) -> String {
     out
 }
 
+/// Prints a report as JSON or as CSV with `#` headers (the full command line in them).
+fn emit(v: &Value, json: bool, to_csv: impl Fn(&Value, &str) -> String) {
+    let text = if json {
+        serde_json::to_string_pretty(v).unwrap_or_default() + "\n"
+    } else {
+        let cmdline: Vec<String> = std::env::args().collect();
+        to_csv(v, &cmdline.join(" "))
+    };
+    // a closed pipe (e.g. `| head`) ends the output quietly
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}
+
 fn run(cli: Cli) -> CliResult<()> {
     match cli.command {
         Command::Green(a) => {
@@ -327,17 +339,14 @@ fn run(cli: Cli) -> CliResult<()> {
                     green::<Float>(&a, p.bits(), d as usize)?
                 }
             };
-            let text = if a.json {
-                serde_json::to_string_pretty(&v).unwrap_or_default() + "\n"
-            } else {
-                let cmdline: Vec<String> = std::env::args().collect();
-                csv(&v, &cmdline.join(" "))
-            };
-            // a closed pipe (e.g. `| head`) ends the output quietly
-            let _ = std::io::stdout().lock().write_all(text.as_bytes());
+            emit(&v, a.json, csv);
             Ok(())
         }
-        Command::Run(a) => impact_run::run(&a, VERSION).map_err(CliError),
+        Command::Run(a) => {
+            let v = impact_run::run(&a, VERSION).map_err(CliError)?;
+            emit(&v, impact_run::wants_json(&a), impact_run::csv);
+            Ok(())
+        }
     }
 }
 
