@@ -1,6 +1,7 @@
 //! Tests of the `figures` binary: every figure's CSV agrees with direct library calls, the
 //! classical alpha-V curve is monotone and sub-Rayleigh, the regime map's boundary is
-//! gamma = cot Theta, selection and error handling behave.
+//! gamma = cot Theta, selection and error handling behave, and every PNG is an anti-aliased
+//! rendering of its SVG, with text, at the page's size.
 //!
 //! The binary runs with `--out` into a directory under the target directory (never into
 //! `figures/`); all figures once with `--quick` (fewer points, each computed exactly as in
@@ -652,5 +653,108 @@ fn error_vs_time_shows_errors_falling_with_precision_and_honest_estimates() {
         assert!(
             err(&w[1], "err_v_over_c1_cot_theta") < err(&w[0], "err_v_over_c1_cot_theta") * 1e-2
         );
+    }
+}
+
+/// A PNG written by the binary, decoded (RGBA, opaque).
+fn decode_png(path: &Path) -> resvg::tiny_skia::Pixmap {
+    resvg::tiny_skia::Pixmap::decode_png(&std::fs::read(path).expect("png written"))
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// The `width` and `height` attributes of an SVG's root element, in pixels.
+fn svg_size(path: &Path) -> (u32, u32) {
+    let svg = std::fs::read_to_string(path).expect("svg written");
+    let head = &svg[svg.find("<svg").expect("an <svg> element")..];
+    let attr = |name: &str| -> u32 {
+        let key = format!(" {name}=\"");
+        let at = head
+            .find(&key)
+            .unwrap_or_else(|| panic!("{name} attribute"))
+            + key.len();
+        head[at..head[at..].find('"').unwrap() + at]
+            .parse()
+            .unwrap()
+    };
+    (attr("width"), attr("height"))
+}
+
+/// Pixels of exactly `color`.
+fn pure(png: &resvg::tiny_skia::Pixmap, color: (u8, u8, u8)) -> usize {
+    png.pixels()
+        .iter()
+        .filter(|p| (p.red(), p.green(), p.blue()) == color)
+        .count()
+}
+
+/// Pixels that blend `color` with white, neither of the two: their red, green and blue lie,
+/// within 6 levels, on the line from white to `color`, at between 15 % and 85 % of the way.
+/// A renderer without anti-aliasing paints a thick line of `color` in `color` only.
+fn blends_with_white(png: &resvg::tiny_skia::Pixmap, color: (u8, u8, u8)) -> usize {
+    let c = [color.0, color.1, color.2].map(f64::from);
+    let span = c.map(|v| 255.0 - v);
+    let k = (0..3).max_by(|&a, &b| span[a].total_cmp(&span[b])).unwrap();
+    png.pixels()
+        .iter()
+        .filter(|p| {
+            let p = [p.red(), p.green(), p.blue()].map(f64::from);
+            let t = (255.0 - p[k]) / span[k];
+            (0.15..=0.85).contains(&t) && (0..3).all(|i| (255.0 - t * span[i] - p[i]).abs() <= 6.0)
+        })
+        .count()
+}
+
+/// Dark pixels (every channel below 100) in the rows `rows`.
+fn dark_pixels(png: &resvg::tiny_skia::Pixmap, rows: std::ops::Range<u32>) -> usize {
+    let w = png.width() as usize;
+    png.pixels()[rows.start as usize * w..rows.end as usize * w]
+        .iter()
+        .filter(|p| p.red() < 100 && p.green() < 100 && p.blue() < 100)
+        .count()
+}
+
+#[test]
+fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
+    let d = quick_all();
+    for (name, size) in [
+        ("fig3", Some((1100, 750))),
+        ("fig4", Some((1100, 750))),
+        ("fig5", Some((1100, 750))),
+        ("fig6", Some((1600, 700))),
+        ("fig7", Some((1600, 700))),
+        ("regime_map", None),
+        ("field_snapshot", None),
+        ("error_vs_time", None),
+    ] {
+        let png = decode_png(&d.join(format!("{name}.png")));
+        let svg = svg_size(&d.join(format!("{name}.svg")));
+        assert_eq!(
+            (png.width(), png.height()),
+            svg,
+            "{name}: PNG of the SVG's size"
+        );
+        if let Some(size) = size {
+            assert_eq!(svg, size, "{name}: page size");
+        }
+        // the title, set in the embedded font above the plotting area (which starts at row 43)
+        let title = dark_pixels(&png, 0..40);
+        assert!(title > 500, "{name}: title drawn, {title} dark pixels");
+        assert!(
+            png.pixels().iter().all(|p| p.alpha() == 255),
+            "{name}: opaque"
+        );
+    }
+    // the 2-pixel curves of the two solution variants: the aliased bitmap renderer painted
+    // them with about one blended pixel for every four of pure colour (its blends came from
+    // the thin lines only); anti-aliased, the blended edges outnumber the pure core
+    for name in ["fig3", "fig6"] {
+        let png = decode_png(&d.join(format!("{name}.png")));
+        for color in [(0x00, 0x72, 0xB2), (0xD5, 0x5E, 0x00)] {
+            let (edge, core) = (blends_with_white(&png, color), pure(&png, color));
+            assert!(
+                core > 300 && edge > 500 && 2 * edge > core,
+                "{name} {color:?}: {edge} blended against {core} pure pixels"
+            );
+        }
     }
 }

@@ -1,17 +1,19 @@
 //! The plotting layer: a figure is a [`Page`] of side-by-side [`Panel`]s, each a set of line
 //! [`Series`] (solid, dashed or dotted), filled [`Cell`]s and text [`Note`]s on linear or
-//! logarithmic axes. [`save`] draws a page twice, into `<name>.png` (bitmap) and
-//! `<name>.svg`, with the DejaVu Sans font embedded from the `dejavu` crate (no system font
-//! library is needed).
+//! logarithmic axes. [`save`] draws a page into `<name>.svg` and renders that SVG,
+//! anti-aliased, into `<name>.png` ([`render_png`]); both use the DejaVu Sans font embedded
+//! from the `dejavu` crate (no system font library is needed).
 
 use std::path::{Path, PathBuf};
-use std::sync::Once;
+use std::sync::{Arc, Once, OnceLock};
 
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{register_font, FontStyle};
+use resvg::tiny_skia::{self, Pixmap, Transform};
+use resvg::usvg::{fontdb, Options, Tree};
 
 use super::{FigError, Result};
 
@@ -254,22 +256,80 @@ fn draw_err<E: std::fmt::Display>(name: &str) -> impl Fn(E) -> FigError + '_ {
     move |e| FigError(format!("drawing {name}: {e}"))
 }
 
-/// Draw `page` into `<dir>/<name>.png` and `<dir>/<name>.svg`.
+/// Draw `page` into `<dir>/<name>.svg`, and render that SVG into `<dir>/<name>.png` of the
+/// page's size in pixels.
 pub fn save(dir: &Path, page: &Page) -> Result<Vec<PathBuf>> {
     register_fonts()?;
     let png = dir.join(format!("{}.png", page.name));
     let svg = dir.join(format!("{}.svg", page.name));
+    let mut text = String::new();
     {
-        let root = BitMapBackend::new(&png, (page.width, page.height)).into_drawing_area();
+        let root =
+            SVGBackend::with_string(&mut text, (page.width, page.height)).into_drawing_area();
         draw_page(&root, page)?;
         root.present().map_err(draw_err(page.name))?;
     }
-    {
-        let root = SVGBackend::new(&svg, (page.width, page.height)).into_drawing_area();
-        draw_page(&root, page)?;
-        root.present().map_err(draw_err(page.name))?;
-    }
+    let write = |path: &Path, bytes: &[u8]| {
+        std::fs::write(path, bytes)
+            .map_err(|e| FigError(format!("cannot write {}: {e}", path.display())))
+    };
+    write(&svg, text.as_bytes())?;
+    let bytes = render_png(&text, page.width, page.height)
+        .map_err(|e| FigError(format!("drawing {}: {}", page.name, e.0)))?;
+    write(&png, &bytes)?;
     Ok(vec![png, svg])
+}
+
+/// Family of the DejaVu Sans faces embedded from the `dejavu` crate.
+const DEJAVU_SANS: &str = "DejaVu Sans";
+
+/// The font database of [`render_png`]: the embedded DejaVu Sans faces (regular, bold,
+/// oblique, bold oblique), which also stand for the generic `sans-serif` family that the SVG
+/// names and for `serif`, the renderer's last resort (built once per process).
+fn font_db() -> Arc<fontdb::Database> {
+    static DB: OnceLock<Arc<fontdb::Database>> = OnceLock::new();
+    DB.get_or_init(|| {
+        let mut db = fontdb::Database::new();
+        for face in [
+            dejavu::sans::regular(),
+            dejavu::sans::bold(),
+            dejavu::sans::oblique(),
+            dejavu::sans::bold_oblique(),
+        ] {
+            db.load_font_data(face.to_vec());
+        }
+        db.set_sans_serif_family(DEJAVU_SANS);
+        db.set_serif_family(DEJAVU_SANS);
+        Arc::new(db)
+    })
+    .clone()
+}
+
+/// Render an SVG document, anti-aliased, on a white background into a PNG of `width` by
+/// `height` pixels (the document scaled to fill it); text is set in the embedded DejaVu Sans.
+///
+/// The drawing is moved by half a pixel: plotters writes whole-pixel coordinates meaning the
+/// pixel itself, so a one-pixel line then covers its pixel exactly instead of half of two.
+/// Rectangles (the cells of a map, the background) are filled with crisp edges: shifted, they
+/// would otherwise leave half-covered seams between neighbouring cells.
+pub fn render_png(svg: &str, width: u32, height: u32) -> Result<Vec<u8>> {
+    let opt = Options {
+        font_family: DEJAVU_SANS.into(),
+        fontdb: font_db(),
+        style_sheet: Some("rect { shape-rendering: crispEdges; }".into()),
+        ..Options::default()
+    };
+    let tree = Tree::from_str(svg, &opt).map_err(|e| FigError(format!("parsing SVG: {e}")))?;
+    let mut pixmap = Pixmap::new(width, height)
+        .ok_or_else(|| FigError(format!("cannot make a {width}x{height} image")))?;
+    pixmap.fill(tiny_skia::Color::WHITE);
+    let size = tree.size();
+    let scale = Transform::from_scale(width as f32 / size.width(), height as f32 / size.height())
+        .pre_translate(0.5, 0.5);
+    resvg::render(&tree, scale, &mut pixmap.as_mut());
+    pixmap
+        .encode_png()
+        .map_err(|e| FigError(format!("encoding PNG: {e}")))
 }
 
 fn draw_page<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, page: &Page) -> Result<()> {
