@@ -47,7 +47,7 @@ pub struct RunArgs {
     /// Cell width dx/R of the finest grid.
     #[arg(long, default_value_t = 0.005, allow_hyphen_values = true)]
     dx: f64,
-    /// kappa = c1 dt/dx, at least 2.
+    /// kappa = c1 dt/dx, at least 1/2.
     #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
     kappa: f64,
     /// Refinement levels for the error estimates (1 to 4).

@@ -269,7 +269,7 @@ fn run_refuses_bad_input_with_one_line() {
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["--mass-ratio", "0", "--end", "c1t/R=1"], "mass ratio"),
         (vec!["--end", "c1t/R=0"], "end time"),
-        (vec!["--end", "c1t/R=1", "--kappa", "1"], "kappa"),
+        (vec!["--end", "c1t/R=1", "--kappa", "0.25"], "kappa"),
         (
             vec!["--end", "c1t/R=1", "--driven", "speed:V_over_c1=0.01"],
             "contradictory",

@@ -1,39 +1,83 @@
 //! Influence coefficients of the uniform space-time grid (`docs/impact.md`, section 2).
 //!
 //! Cells [x_j - dx/2, x_j + dx/2] x [t_{m-1}, t_m], x_j = j dx, t_m = m dt, kappa = c1 dt/dx,
-//! a unit pressure constant on a cell; the normal surface displacement at the collocation
-//! point (x_i, t_n) is A(i - j, n - m), a four-corner difference of the Lamb crate's space-time
-//! primitive Phi(X, T) (`lamb::cells`, closed form, singular parts integrated exactly).
-//! Phi is homogeneous of degree 1, so A = dx a(k, l) with a depending on kappa and the
-//! material only: one table serves every grid of the same kappa (the refinement levels).
-//! Units c1 = 1, mu = 1.
+//! a unit pressure constant on a cell. The contact condition is imposed on the **mean** of the
+//! normal surface displacement over each contact cell at the end of each step (Galerkin in
+//! space, collocation at t_n in time): A(i - j, n - m) is the mean over cell i at t_n of the
+//! displacement due to cell j loaded over step m. With Phi(X, T) the Lamb crate's space-time
+//! primitive (`lamb::cells`) and
+//!
+//! ```text
+//!   Xi(X, T) = Int_0^X Phi(X', T) dX'   (even in X),
+//!   A(k, l) = (1/dx) [D Xi(t_{l+1}) - D Xi(t_l)],   D Xi = Xi(k + 1) - 2 Xi(k) + Xi(k - 1)
+//! ```
+//!
+//! (X in cells). The mean displacement is the work-conjugate of a piecewise-constant
+//! pressure, so the discrete energy input sum_n p_n . (wbar_n - wbar_{n-1}) is exactly the
+//! work done on the half-plane, which is never negative: the march has no growing modes.
+//! Point collocation at the cell centres has them (a mode about 2.4 cells long grows by about
+//! 3 % a step for kappa = 2, whatever kappa; `docs/impact.md`, section 2).
+//!
+//! Xi is an integral of the closed-form Phi over X at fixed T; Phi is smooth in X except on
+//! the wave arrivals X = s_R T, c2 T, c1 T, so each unit interval is split there and each
+//! piece integrated by Gauss-Legendre with quadratic clustering at both ends (the arrivals
+//! are weak singularities of Phi: x log x at the Rayleigh ray, fractional powers at the
+//! fronts). The error of each piece is the difference of two rules.
+//!
+//! Phi, hence Xi, is homogeneous (of degree 1, 2), so A = dx a(k, l) with a depending on kappa
+//! and the material only: one table serves every grid of the same kappa (the refinement
+//! levels). Units c1 = 1, mu = 1.
 
+use complexfn::quadrature::gauss_legendre_rule;
 use lamb::HalfPlane;
 
 use crate::error::Result;
+
+/// Gauss-Legendre sizes of the two rules whose difference estimates a piece's error.
+const RULE_FINE: usize = 24;
+const RULE_COARSE: usize = 16;
+/// Gauss-Legendre sizes on pieces where Phi is analytic.
+const SMOOTH_FINE: usize = 7;
+const SMOOTH_COARSE: usize = 5;
+/// Largest relative difference of the two plain rules accepted on an analytic piece.
+const SMOOTH_TOL: f64 = 1e-13;
 
 /// The normalised coefficients a(k, l) (dx = 1), grown on demand in k and l.
 pub struct Tables {
     kappa: f64,
     half_plane: HalfPlane<f64>,
-    /// phi[l][k] = Phi(k + 1/2, l kappa), the primitive at the cell corners (dx = 1).
-    phi: Vec<Vec<f64>>,
-    /// a[l][k] for l = 0 .. phi.len() - 2.
+    /// xi[l][j] = Xi(j, l kappa) (dx = 1), j = 0, 1, ...
+    xi: Vec<Vec<f64>>,
+    /// The accumulated error estimate of the last value of each row of `xi`.
+    xi_err: Vec<f64>,
+    /// a[l][k] for l = 0 .. xi.len() - 2.
     a: Vec<Vec<f64>>,
-    /// Largest rounding-error estimate of a coefficient so far.
+    /// Largest absolute error estimate of a coefficient so far.
     err: f64,
+    /// The two Gauss-Legendre rules on [-1, 1].
+    fine: std::sync::Arc<Vec<(f64, f64)>>,
+    coarse: std::sync::Arc<Vec<(f64, f64)>>,
+    smooth_fine: std::sync::Arc<Vec<(f64, f64)>>,
+    smooth_coarse: std::sync::Arc<Vec<(f64, f64)>>,
 }
 
 impl Tables {
     /// Tables for the half-plane `half_plane` (units c1 = 1) and kappa = c1 dt/dx.
-    pub fn new(half_plane: HalfPlane<f64>, kappa: f64) -> Self {
-        Tables {
+    pub fn new(half_plane: HalfPlane<f64>, kappa: f64) -> Result<Self> {
+        Ok(Tables {
             kappa,
             half_plane,
-            phi: vec![Vec::new()],
+            xi: vec![Vec::new()],
+            xi_err: vec![0.0],
             a: Vec::new(),
             err: 0.0,
-        }
+            fine: gauss_legendre_rule::<f64>(RULE_FINE, 53).map_err(lamb::LambError::from)?,
+            coarse: gauss_legendre_rule::<f64>(RULE_COARSE, 53).map_err(lamb::LambError::from)?,
+            smooth_fine: gauss_legendre_rule::<f64>(SMOOTH_FINE, 53)
+                .map_err(lamb::LambError::from)?,
+            smooth_coarse: gauss_legendre_rule::<f64>(SMOOTH_COARSE, 53)
+                .map_err(lamb::LambError::from)?,
+        })
     }
 
     /// The half-plane.
@@ -46,48 +90,151 @@ impl Tables {
         self.err
     }
 
+    /// Phi(x, t) (normal displacement, normal load) and its error estimate.
+    fn phi(&self, x: f64, t: f64) -> Result<(f64, f64)> {
+        let e = self.half_plane.space_time_primitive(1, &x, &t)?.zz;
+        Ok((e.value, e.err))
+    }
+
+    /// Int_a^b Phi(x, t) dx by two rules (sizes `RULE_FINE`, `RULE_COARSE`) after the
+    /// substitution x = end + (mid - end) u^2 from each end (quadratic clustering, for a
+    /// piece ending on a wave arrival or at X = 0), with the rules' difference as the error.
+    fn clustered(&self, a: f64, b: f64, t: f64) -> Result<(f64, f64)> {
+        let mid = 0.5 * (a + b);
+        let mut vals = [0.0; 2];
+        let mut round = 0.0;
+        for (r, rule) in [&self.fine, &self.coarse].into_iter().enumerate() {
+            let mut s = 0.0;
+            for (end, dir) in [(a, mid - a), (b, mid - b)] {
+                for (u, w) in rule.iter() {
+                    let u = 0.5 * (u + 1.0);
+                    let (v, e) = self.phi(end + dir * u * u, t)?;
+                    // dx = 2 dir u du, du = dU/2 on [-1, 1]
+                    let jac = w * dir.abs() * u;
+                    s += v * jac;
+                    if r == 0 {
+                        round += e * jac;
+                    }
+                }
+            }
+            vals[r] = s;
+        }
+        Ok((vals[0], (vals[0] - vals[1]).abs() + round))
+    }
+
+    /// Int_a^b Phi(x, t) dx for a piece with no wave arrival inside, with its error estimate.
+    /// Beyond the P front (a >= t) Phi does not depend on X; a piece away from the arrivals
+    /// and from X = 0 takes the plain rules (Phi is analytic there), unless their difference
+    /// exceeds `SMOOTH_TOL` relative to the piece, when the clustered rules are used.
+    fn piece(&self, a: f64, b: f64, t: f64) -> Result<(f64, f64)> {
+        if a >= t {
+            let (v, e) = self.phi(a, t)?;
+            return Ok((v * (b - a), e * (b - a)));
+        }
+        let hp = &self.half_plane;
+        let arrivals = [0.0, *hp.s_r() * t, *hp.m() * t, t];
+        let near = |x: f64| {
+            arrivals
+                .iter()
+                .any(|&q| (x - q).abs() <= 1e-12 * t.max(1.0))
+        };
+        if !near(a) && !near(b) {
+            let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
+            let mut vals = [0.0; 2];
+            let mut round = 0.0;
+            for (r, rule) in [&self.smooth_fine, &self.smooth_coarse]
+                .into_iter()
+                .enumerate()
+            {
+                let mut s = 0.0;
+                for (u, w) in rule.iter() {
+                    let (v, e) = self.phi(mid + half * u, t)?;
+                    s += v * w * half;
+                    if r == 0 {
+                        round += e * w * half;
+                    }
+                }
+                vals[r] = s;
+            }
+            let err = (vals[0] - vals[1]).abs();
+            if err <= SMOOTH_TOL * vals[0].abs().max(round) {
+                return Ok((vals[0], err + round));
+            }
+        }
+        self.clustered(a, b, t)
+    }
+
+    /// Int_lo^hi Phi(x, t) dx, split at the wave arrivals s_R t, c2 t, c1 t.
+    fn interval(&self, lo: f64, hi: f64, t: f64) -> Result<(f64, f64)> {
+        let hp = &self.half_plane;
+        let mut pts = [lo, 0.0, 0.0, 0.0, hi];
+        let mut n = 1;
+        let mut arrivals = [*hp.s_r() * t, *hp.m() * t, t];
+        arrivals.sort_by(f64::total_cmp);
+        for b in arrivals {
+            if b > lo && b < hi {
+                pts[n] = b;
+                n += 1;
+            }
+        }
+        pts[n] = hi;
+        let (mut v, mut e) = (0.0, 0.0);
+        for w in pts[..=n].windows(2) {
+            let (pv, pe) = self.piece(w[0], w[1], t)?;
+            v += pv;
+            e += pe;
+        }
+        Ok((v, e))
+    }
+
     /// Makes a(k, l) available for k <= kmax and l <= lmax.
     pub fn ensure(&mut self, kmax: usize, lmax: usize) -> Result<()> {
+        // Xi at j = 0 ..= kmax + 1
         let width = kmax + 2;
-        // rows of phi: l = 0 .. lmax + 1, each of `width` corners
-        while self.phi.len() < lmax + 2 {
-            self.phi.push(Vec::new());
+        while self.xi.len() < lmax + 2 {
+            self.xi.push(Vec::new());
+            self.xi_err.push(0.0);
         }
-        for l in 0..self.phi.len() {
-            let have = self.phi[l].len();
+        for l in 0..self.xi.len() {
+            let have = self.xi[l].len();
             if have >= width {
                 continue;
             }
             let t = l as f64 * self.kappa;
-            for k in have..width {
-                let v = if l == 0 {
+            let mut row = std::mem::take(&mut self.xi[l]);
+            let mut cum = self.xi_err[l];
+            for j in have..width {
+                let v = if l == 0 || j == 0 {
                     0.0
                 } else {
-                    let e = self
-                        .half_plane
-                        .space_time_primitive(1, &(k as f64 + 0.5), &t)?
-                        .zz;
-                    self.err = self.err.max(e.err);
-                    e.value
+                    let (v, e) = self.interval((j - 1) as f64, j as f64, t)?;
+                    // the error of Xi accumulates over the unit intervals; a coefficient
+                    // takes eight values of Xi
+                    cum += e;
+                    self.err = self.err.max(8.0 * cum);
+                    row[j - 1] + v
                 };
-                self.phi[l].push(v);
+                row.push(v);
             }
+            self.xi[l] = row;
+            self.xi_err[l] = cum;
         }
         while self.a.len() < lmax + 1 {
             self.a.push(Vec::new());
         }
         for l in 0..self.a.len() {
             let have = self.a[l].len();
-            for k in have..=kmax.max(have.saturating_sub(1)) {
-                if k < have {
-                    continue;
-                }
-                let corner = |row: &Vec<f64>, k: usize| -> f64 {
-                    // Phi(k + 1/2) - Phi(k - 1/2); Phi is odd in X
-                    let left = if k == 0 { -row[0] } else { row[k - 1] };
-                    row[k] - left
+            if have > kmax {
+                continue;
+            }
+            for k in have..=kmax {
+                // mean over the receiver cell k of the displacement due to the source cell 0:
+                // Xi(k + 1) - 2 Xi(k) + Xi(k - 1), Xi even in X
+                let d2 = |row: &Vec<f64>| -> f64 {
+                    let left = if k == 0 { row[1] } else { row[k - 1] };
+                    row[k + 1] - 2.0 * row[k] + left
                 };
-                let v = corner(&self.phi[l + 1], k) - corner(&self.phi[l], k);
+                let v = d2(&self.xi[l + 1]) - d2(&self.xi[l]);
                 self.a[l].push(v);
             }
         }
@@ -97,5 +244,113 @@ impl Tables {
     /// The row a(., l) (dx = 1), available up to the k given to [`Tables::ensure`].
     pub fn row(&self, l: usize) -> &[f64] {
         &self.a[l]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use lamb::cells::{Cell, TimeShape};
+
+    fn tables(kappa: f64, kmax: usize, lmax: usize) -> Tables {
+        let hp = HalfPlane::from_poisson(0.3).unwrap();
+        let mut t = Tables::new(hp, kappa).unwrap();
+        t.ensure(kmax, lmax).unwrap();
+        t
+    }
+
+    /// A second route: the mean over the receiver cell of the Lamb crate's point response to
+    /// a loaded cell, by a many-point midpoint rule (the point response has only integrable
+    /// singularities, so the rule converges, slowly).
+    #[test]
+    fn coefficients_are_receiver_means_of_the_point_response() {
+        let kappa = 2.0;
+        let t = tables(kappa, 6, 6);
+        let hp = t.half_plane().clone();
+        let cell = Cell {
+            xa: -0.5,
+            xb: 0.5,
+            ta: 0.0,
+            tb: kappa,
+        };
+        let n = 4000;
+        for (k, l) in [(0, 0), (1, 0), (0, 3), (2, 2), (5, 4), (3, 6)] {
+            // load on the first step, receiver at the end of step l + 1
+            let tr = (l + 1) as f64 * kappa;
+            let mut s = 0.0;
+            for q in 0..n {
+                let x = k as f64 - 0.5 + (q as f64 + 0.5) / n as f64;
+                s += hp
+                    .cell_response(&cell, TimeShape::Constant, &x, &tr)
+                    .unwrap()
+                    .zz
+                    .value;
+            }
+            let want = s / n as f64;
+            let got = t.row(l)[k];
+            assert!(
+                (got - want).abs() < 2e-5 * want.abs().max(0.01),
+                "a({k}, {l}) = {got}, receiver mean {want}"
+            );
+        }
+        assert!(t.error() < 1e-9, "table error estimate {}", t.error());
+    }
+
+    /// Cholesky factorisation of a symmetric matrix (row-major, n x n); false when a pivot is
+    /// not positive.
+    fn positive_definite(mut s: Vec<f64>, n: usize) -> bool {
+        for c in 0..n {
+            for r in 0..c {
+                let mut v = s[c * n + r];
+                for q in 0..r {
+                    v -= s[c * n + q] * s[r * n + q];
+                }
+                s[c * n + r] = v / s[r * n + r];
+            }
+            let mut d = s[c * n + c];
+            for q in 0..c {
+                d -= s[c * n + q] * s[c * n + q];
+            }
+            if !(d > 0.0) {
+                return false;
+            }
+            s[c * n + c] = d.sqrt();
+        }
+        true
+    }
+
+    /// The discrete energy input sum_n p_n . (wbar_n - wbar_{n-1}) of any pressure history
+    /// (cells 0..N, steps 1..M) is the work done on the half-plane, never negative: the
+    /// symmetric part of its matrix is positive semi-definite. (With point collocation at the
+    /// cell centres it is not: its smallest eigenvalue is -0.062 for 32 cells and 40 steps at
+    /// kappa = 2, which is why that march has growing modes.)
+    #[test]
+    fn discrete_energy_input_is_never_negative() {
+        for (kappa, nc, ns) in [(2.0, 32, 40), (1.0, 16, 30), (4.0, 16, 30)] {
+            let t = tables(kappa, nc, ns);
+            let n = nc * ns;
+            let a = |k: usize, l: i64| if l < 0 { 0.0 } else { t.row(l as usize)[k] };
+            let mut b = vec![0.0; n * n];
+            for sn in 0..ns {
+                for sm in 0..=sn {
+                    for i in 0..nc {
+                        for j in 0..nc {
+                            let k = i.abs_diff(j);
+                            let l = (sn - sm) as i64;
+                            b[(sn * nc + i) * n + sm * nc + j] = a(k, l) - a(k, l - 1);
+                        }
+                    }
+                }
+            }
+            let mut s = vec![0.0; n * n];
+            for r in 0..n {
+                for c in 0..n {
+                    // a small shift: the form is only semi-definite in the limit
+                    s[r * n + c] =
+                        0.5 * (b[r * n + c] + b[c * n + r]) + if r == c { 1e-9 } else { 0.0 };
+                }
+            }
+            assert!(positive_definite(s, n), "kappa = {kappa}");
+        }
     }
 }
