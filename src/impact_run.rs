@@ -184,7 +184,12 @@ fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
 }
 
 fn poisson(a: &RunArgs) -> R<f64> {
-    match (a.c1, a.c2, a.poisson) {
+    material(a.c1, a.c2, a.poisson)
+}
+
+/// Poisson's ratio from `--c1`, `--c2` (m/s) or `--poisson`, with one-line errors.
+pub fn material(c1: Option<f64>, c2: Option<f64>, nu: Option<f64>) -> R<f64> {
+    match (c1, c2, nu) {
         (None, None, Some(nu)) => Ok(nu),
         (Some(c1), Some(c2), None) => {
             if !(c1 > 0.0 && c2 > 0.0 && c1.is_finite() && c2.is_finite()) {

@@ -306,3 +306,101 @@ fn run_refuses_bad_input_with_one_line() {
     assert_eq!(code, 2);
     assert!(err.contains("theta_deg"), "{err}");
 }
+
+/// `impact edge`: the keys of each record, the exponents of each range (the closed forms of
+/// `docs/edge.md`: +-1/2 below c2, Freund's q - 1/2 transonic, 0 supersonic) and refusals.
+#[test]
+fn edge_prints_exponents_per_range_and_refuses_bad_speeds() {
+    let nu: f64 = 0.25;
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_impact"))
+        .args([
+            "edge",
+            "--poisson",
+            "0.25",
+            "--speed-over-c1",
+            "0.3,0.55,0.7,1.2",
+            "--json",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let recs = v["records"].as_array().unwrap();
+    let ranges: Vec<&str> = recs.iter().map(|r| r["range"].as_str().unwrap()).collect();
+    assert_eq!(
+        ranges,
+        ["sub-rayleigh", "rayleigh-shear", "transonic", "supersonic"]
+    );
+    let sel: Vec<f64> = recs
+        .iter()
+        .map(|r| r["selected"].as_f64().unwrap())
+        .collect();
+    assert_eq!(&sel[..2], &[0.5, -0.5]);
+    let m2 = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));
+    let d: f64 = 0.7;
+    let a1 = (1.0 - d * d).sqrt();
+    let b2 = (d * d / m2 - 1.0).sqrt();
+    let q = (4.0 * a1 * b2 / (1.0 - b2 * b2).powi(2)).atan() / std::f64::consts::PI;
+    assert!(
+        (sel[2] - (q - 0.5)).abs() < 1e-12,
+        "{} vs {}",
+        sel[2],
+        q - 0.5
+    );
+    assert_eq!(sel[3], 0.0);
+    for r in recs {
+        for key in ["speed_over_c1", "range", "exponents", "selected", "law"] {
+            assert!(!r[key].is_null(), "missing {key}");
+        }
+    }
+    // CSV: one row per local solution
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_impact"))
+        .args([
+            "edge",
+            "--c1",
+            "1870.83",
+            "--c2",
+            "1000",
+            "--speed-over-c1",
+            "0.2",
+            "--law",
+            "kinematic",
+        ])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with('#'));
+    assert!(text.contains("0.2,sub-rayleigh,-0.5,"));
+    for (args, word) in [
+        (
+            vec!["--poisson", "0.25", "--speed-over-c1", "0"],
+            "speed_over_c1",
+        ),
+        (
+            vec!["--poisson", "0.25", "--speed-over-c1", "1"],
+            "speed_over_c1",
+        ),
+        (
+            vec![
+                "--poisson",
+                "0.25",
+                "--speed-over-c1",
+                "0.2",
+                "--law",
+                "sticky",
+            ],
+            "--law",
+        ),
+        (vec!["--poisson", "0.25"], "--speed-over-c1"),
+    ] {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_impact"))
+            .arg("edge")
+            .args(&args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(word), "{err}");
+    }
+}

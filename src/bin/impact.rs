@@ -40,10 +40,16 @@ enum Command {
     /// the contact half-width, the force, energies and pressure profiles, each with an error
     /// estimate from grid refinement.
     Run(impact_run::RunArgs),
+    /// The power law p ~ d^lambda of the contact pressure at a contact edge moving at speed
+    /// D, for each speed range and edge law (docs/edge.md).
+    Edge(impact_edge::EdgeArgs),
 }
 
 #[path = "../impact_run.rs"]
 mod impact_run;
+
+#[path = "../impact_edge.rs"]
+mod impact_edge;
 
 #[derive(Args, Debug)]
 struct GreenArgs {
@@ -345,6 +351,11 @@ fn run(cli: Cli) -> CliResult<()> {
         Command::Run(a) => {
             let v = impact_run::run(&a, VERSION).map_err(CliError)?;
             emit(&v, impact_run::wants_json(&a), impact_run::csv);
+            Ok(())
+        }
+        Command::Edge(a) => {
+            let v = impact_edge::run(&a, VERSION).map_err(CliError)?;
+            emit(&v, a.json, impact_edge::csv);
             Ok(())
         }
     }

@@ -40,25 +40,8 @@ impl Motion {
     }
 }
 
-/// The edge law (labelled in every output).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum EdgeLaw {
-    /// The paper's eq (4): the edge where the undeformed profile meets the undeformed
-    /// surface, f(b) = h.
-    Kinematic,
-    /// The unilateral conditions: pressure >= 0 on the contact, no interpenetration outside.
-    Signorini,
-}
-
-impl EdgeLaw {
-    /// `kinematic` or `signorini`.
-    pub fn name(self) -> &'static str {
-        match self {
-            EdgeLaw::Kinematic => "kinematic",
-            EdgeLaw::Signorini => "signorini",
-        }
-    }
-}
+/// The edge law (labelled in every output); shared with the edge analysis of `lamb::edge`.
+pub use lamb::edge::EdgeLaw;
 
 /// One time step's solution.
 #[derive(Clone, Debug)]

@@ -9,6 +9,7 @@
 //!   linear in time, as corner differences of homogeneous primitives;
 //! * [`rational`]: closed-form integrals of even rational functions (partial fractions,
 //!   principal values, Taylor series near the wavefronts);
+//! * [`edge`]: the power law of the contact pressure at a moving contact edge, by edge speed;
 //! * [`transform`]: the transform-domain kernels (self-similar surface response), shared with
 //!   the genuine wedge solver.
 //!
@@ -21,6 +22,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod cells;
+pub mod edge;
 pub mod error;
 pub mod half_plane;
 pub mod moments;
