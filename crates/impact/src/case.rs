@@ -10,6 +10,7 @@ use lamb::HalfPlane;
 use crate::error::{invalid, ImpactError, Result};
 use crate::march::{EdgeLaw, March, Motion, StepState};
 use crate::profile::Profile;
+use crate::striker::{shell_energies, Ring, Striker};
 use crate::tables::Tables;
 
 /// Smallest admissible kappa = c1 dt/dx. The march is stable for every kappa (the discrete
@@ -40,6 +41,8 @@ pub struct ImpactCase {
     pub poisson: f64,
     /// The striker's profile.
     pub profile: Profile,
+    /// The striker model (rigid by default).
+    pub striker: Striker,
     /// Free or driven.
     pub drive: Drive,
     /// The edge law.
@@ -61,6 +64,7 @@ impl ImpactCase {
         ImpactCase {
             poisson,
             profile,
+            striker: Striker::Rigid,
             drive,
             law,
             end,
@@ -70,8 +74,48 @@ impl ImpactCase {
         }
     }
 
+    /// The case with another striker model.
+    pub fn with_striker(mut self, striker: Striker) -> Self {
+        self.striker = striker;
+        self
+    }
+
     fn validate(&self) -> Result<()> {
         self.profile.validate()?;
+        self.striker.validate()?;
+        if let Striker::Shell(shell) = &self.striker {
+            match self.profile {
+                Profile::Circle { radius } | Profile::Parabola { radius } if radius == 1.0 => {}
+                _ => {
+                    return Err(invalid(
+                        "profile of a shell striker",
+                        self.profile.label(),
+                        "circle:R=1 or parabola:R=1 (the shell's radius is the unit R)",
+                    ))
+                }
+            }
+            if let Drive::Free { mass_ratio, .. } = self.drive {
+                let own = shell.mass_ratio();
+                if (mass_ratio - own).abs() > 1e-12 * own {
+                    return Err(invalid(
+                        "mass ratio m0/(rho R^2) of a shell striker",
+                        mass_ratio,
+                        format!("its own 2 pi (h_s/R) rho_s/rho = {own:.6}"),
+                    ));
+                }
+            }
+        }
+        let valid_until = self.striker.validity_end();
+        if self.end > valid_until {
+            return Err(invalid(
+                "end time c1 t/R",
+                self.end,
+                format!(
+                    "(0, {valid_until:.6}]: the elastic striker's local half-plane model holds until \
+                     the P wave returns from its far side, c1 t/R = 2 c1/c1s"
+                ),
+            ));
+        }
         match &self.drive {
             Drive::Free {
                 mass_ratio,
@@ -169,6 +213,12 @@ impl ImpactCase {
         let m = *hp.m();
         let s_r = *hp.s_r();
         let mut tables = Tables::new(hp, self.kappa)?;
+        // the elastic striker's tables are normalised like the half-plane's and serve every
+        // level; the shell's depend on dx and are built per level
+        let mut shared = match self.striker {
+            Striker::Elastic(_) => self.striker.compliance(m, self.dx, self.kappa)?,
+            _ => None,
+        };
         let motion = match &self.drive {
             Drive::Free {
                 mass_ratio,
@@ -191,8 +241,13 @@ impl ImpactCase {
                 let cells = (half_width / dx - 0.5).round().max(1.0);
                 dx = half_width / (cells + 0.5);
             }
+            let mut own = match self.striker {
+                Striker::Shell(_) => self.striker.compliance(m, dx, self.kappa)?,
+                _ => None,
+            };
             let mut march = March::new(
                 &mut tables,
+                own.as_mut().or(shared.as_mut()),
                 &self.profile,
                 &motion,
                 self.law,
@@ -210,11 +265,22 @@ impl ImpactCase {
                 }
             }
             done += weight;
+            let (dt, steps, separation) = (
+                march.dt(),
+                std::mem::take(&mut march.steps),
+                march.separation,
+            );
+            let striker_err = own
+                .as_ref()
+                .or(shared.as_ref())
+                .map(|c| c.error())
+                .unwrap_or(0.0);
             runs.push(Run {
                 dx,
-                dt: march.dt(),
-                steps: std::mem::take(&mut march.steps),
-                separation: march.separation,
+                dt,
+                steps,
+                separation,
+                coefficient_error: tables.error() + striker_err,
             });
         }
         progress(1.0);
@@ -243,6 +309,9 @@ pub struct Run {
     pub steps: Vec<StepState>,
     /// Separation time (free striker), if any.
     pub separation: Option<f64>,
+    /// A bound of the error of the normalised influence coefficients used (quadrature of the
+    /// half-plane's and an elastic striker's tables, truncation of a shell's modal sums).
+    pub coefficient_error: f64,
 }
 
 /// The edge's speed range.
@@ -300,6 +369,13 @@ pub struct HistoryRow {
     pub kinetic: Option<Value>,
     /// Work done on the half-plane over rho c1^2 R^2, through the kernels.
     pub work: Value,
+    /// The striker's surface displacement towards its interior at the contact point (mean over
+    /// the central cell) over R; `None` for a rigid striker.
+    pub striker_deformation: Option<Value>,
+    /// Energy taken up by the striker's deformation (its strain and vibration kinetic
+    /// energy: the work of the contact pressure on its surface) over rho c1^2 R^2; `None`
+    /// for a rigid striker.
+    pub striker_energy: Option<Value>,
 }
 
 /// The observed convergence order of each quantity.
@@ -371,7 +447,14 @@ impl Solution {
         let nrep = (last_t / dtr + 1e-9).floor() as usize;
         let times: Vec<f64> = (1..=nrep).map(|i| i as f64 * dtr).collect();
         type Getter = fn(&StepState) -> f64;
-        let getters: [Getter; 4] = [|s| s.h, |s| s.v, |s| s.b, |s| s.force];
+        let getters: [Getter; 6] = [
+            |s| s.h,
+            |s| s.v,
+            |s| s.b,
+            |s| s.force,
+            |s| s.ws.first().copied().unwrap_or(0.0),
+            |s| s.striker_work,
+        ];
         // samples[q][level][i]
         let samples: Vec<Vec<Vec<f64>>> = getters
             .iter()
@@ -396,7 +479,7 @@ impl Solution {
                 .unwrap_or(0)
         };
         let nuse = usable(0);
-        let ords: Vec<Option<f64>> = (0..4)
+        let ords: Vec<Option<f64>> = (0..6)
             .map(|q| {
                 if self.runs.len() < 3 {
                     return None;
@@ -475,7 +558,10 @@ impl Solution {
                 value: st.work * m2,
                 err: kinetic.and_then(|k| k.err),
             };
+            let deformable = !matches!(self.case.striker, Striker::Rigid);
             rows.push(HistoryRow {
+                striker_deformation: deformable.then(|| val(4, 1.0)),
+                striker_energy: deformable.then(|| val(5, m2)),
                 t,
                 h: val(0, 1.0),
                 hdot: val(1, hdot_scale),
@@ -507,6 +593,28 @@ impl Solution {
         let x = (0..st.pressure.len()).map(|j| j as f64 * fine.dx).collect();
         let p = st.pressure.iter().map(|v| v * m2).collect();
         Some((st.t, x, p))
+    }
+
+    /// The shell striker's strain and vibration kinetic energy over rho c1^2 R^2 after each
+    /// step of the finest grid, (c1 t/R, strain, kinetic), by the modal recursion of
+    /// [`shell_energies`] (independent of the coefficient tables); `None` for other strikers.
+    pub fn shell_energies(&self) -> Option<Result<Vec<(f64, f64, f64)>>> {
+        let Striker::Shell(shell) = &self.case.striker else {
+            return None;
+        };
+        let run = &self.runs[0];
+        let m2 = self.m * self.m;
+        Some((|| {
+            let ring = Ring::new(shell, self.m)?;
+            let pressures: Vec<Vec<f64>> = run.steps.iter().map(|s| s.pressure.clone()).collect();
+            let e = shell_energies(&ring, run.dx, run.dt, &pressures)?;
+            Ok(run
+                .steps
+                .iter()
+                .zip(e)
+                .map(|(s, (u, k))| (s.t, u * m2, k * m2))
+                .collect())
+        })())
     }
 
     /// Peak force over rho c1^2 R and its time, on the finest grid.

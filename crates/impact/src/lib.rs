@@ -14,9 +14,11 @@ pub mod case;
 pub mod error;
 pub mod march;
 pub mod profile;
+pub mod striker;
 pub mod tables;
 
 pub use case::{Drive, HistoryRow, ImpactCase, Solution, Stage, Value};
 pub use error::{ImpactError, Result};
 pub use march::EdgeLaw;
 pub use profile::Profile;
+pub use striker::{ShellStriker, Striker, StrikerMaterial};

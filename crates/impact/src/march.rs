@@ -7,6 +7,7 @@
 
 use crate::error::{ImpactError, Result};
 use crate::profile::Profile;
+use crate::striker::Compliance;
 use crate::tables::Tables;
 
 /// How the penetration evolves.
@@ -62,16 +63,22 @@ pub struct StepState {
     pub force: f64,
     /// Cell pressures p_0..p_k (units mu), constant over the step.
     pub pressure: Vec<f64>,
-    /// Normal surface displacement at x_0, x_1, ... at t_n (units R), at least over the
-    /// contact and one cell beyond.
+    /// The half-plane's mean normal surface displacement over the cells at x_0, x_1, ... at
+    /// t_n (units R), at least over the contact and one cell beyond.
     pub w: Vec<f64>,
+    /// The striker's mean surface displacement towards its interior over the same cells
+    /// (empty for a rigid striker).
+    pub ws: Vec<f64>,
     /// Work done on the half-plane up to t_n, through the kernels (units mu R^2).
     pub work: f64,
+    /// Work done on the striker's deformation up to t_n (its strain and vibration energy).
+    pub striker_work: f64,
 }
 
 /// The marching state on one grid.
 pub struct March<'a> {
     tables: &'a mut Tables,
+    striker: Option<&'a mut Compliance>,
     profile: &'a Profile,
     motion: &'a Motion,
     law: EdgeLaw,
@@ -125,9 +132,11 @@ fn solve_dense(mut a: Vec<f64>, mut r: Vec<f64>, n: usize) -> Option<Vec<f64>> {
 }
 
 impl<'a> March<'a> {
-    /// A march with cell width dx and time step kappa dx (kappa from the tables).
-    pub fn new(
+    /// A march with cell width dx and time step kappa dx (kappa from the tables), with the
+    /// striker's compliance (none for a rigid striker).
+    pub(crate) fn new(
         tables: &'a mut Tables,
+        striker: Option<&'a mut Compliance>,
         profile: &'a Profile,
         motion: &'a Motion,
         law: EdgeLaw,
@@ -142,6 +151,7 @@ impl<'a> March<'a> {
         };
         March {
             tables,
+            striker,
             profile,
             motion,
             law,
@@ -166,19 +176,17 @@ impl<'a> March<'a> {
         }
     }
 
-    /// Displacement at t_n (n = steps.len() + 1) at x_0..x_imax due to all past steps.
-    fn history(&mut self, n: usize, imax: usize) -> Result<Vec<f64>> {
+    /// Displacements at t_n (n = steps.len() + 1) at x_0..x_imax due to all past steps: the
+    /// half-plane's and the striker's (empty for a rigid striker).
+    fn history(&mut self, n: usize, imax: usize) -> Result<(Vec<f64>, Vec<f64>)> {
         let kmax = self.steps.iter().map(|s| s.k).max().unwrap_or(0).max(imax);
         self.tables.ensure(2 * kmax + 2, n)?;
-        let mut hist = vec![0.0; imax + 1];
-        for (mi, st) in self.steps.iter().enumerate() {
-            if st.pressure.is_empty() {
-                continue;
-            }
-            let l = n - (mi + 1);
-            let row = self.tables.row(l);
-            for (j, &pj) in st.pressure.iter().enumerate() {
-                let pj = pj * self.dx;
+        if let Some(s) = self.striker.as_deref_mut() {
+            s.ensure(2 * kmax + 2, n)?;
+        }
+        let add = |row: &[f64], scale: f64, p: &[f64], hist: &mut [f64]| {
+            for (j, &pj) in p.iter().enumerate() {
+                let pj = pj * scale;
                 if j == 0 {
                     for (i, hv) in hist.iter_mut().enumerate() {
                         *hv += row[i] * pj;
@@ -189,21 +197,51 @@ impl<'a> March<'a> {
                     }
                 }
             }
+        };
+        let mut hist = vec![0.0; imax + 1];
+        let mut hist_s = if self.striker.is_some() {
+            vec![0.0; imax + 1]
+        } else {
+            Vec::new()
+        };
+        for (mi, st) in self.steps.iter().enumerate() {
+            if st.pressure.is_empty() {
+                continue;
+            }
+            let l = n - (mi + 1);
+            add(self.tables.row(l), self.dx, &st.pressure, &mut hist);
+            if let Some(s) = self.striker.as_deref() {
+                let (row, scale) = s.row(l);
+                add(row, self.dx * scale, &st.pressure, &mut hist_s);
+            }
         }
-        Ok(hist)
+        Ok((hist, hist_s))
+    }
+
+    /// The current step's coefficient of the half-plane and of the striker.
+    fn current_parts(&self, i: usize, j: usize) -> (f64, f64) {
+        let pair = |row: &[f64]| row[i.abs_diff(j)] + if j > 0 { row[i + j] } else { 0.0 };
+        let hp = pair(self.tables.row(0)) * self.dx;
+        let st = match self.striker.as_deref() {
+            Some(s) => {
+                let (row, scale) = s.row(0);
+                pair(row) * scale * self.dx
+            }
+            None => 0.0,
+        };
+        (hp, st)
     }
 
     fn current(&self, i: usize, j: usize) -> f64 {
-        let row = self.tables.row(0);
-        let v = row[i.abs_diff(j)] + if j > 0 { row[i + j] } else { 0.0 };
-        v * self.dx
+        let (a, b) = self.current_parts(i, j);
+        a + b
     }
 
     /// Solves the step with contact cells 0..=k: returns (pressures, force).
     fn solve_set(
         &self,
         k: usize,
-        hist: &[f64],
+        hist: &(Vec<f64>, Vec<f64>),
         h_pred: f64,
         coupling: f64,
         time: f64,
@@ -222,7 +260,7 @@ impl<'a> March<'a> {
                     time: format!("{time:.6}"),
                     reason: "the contact reaches the end of the profile".into(),
                 })?;
-            r[i] = h_pred - f - hist[i];
+            r[i] = h_pred - f - hist.0[i] - hist.1.get(i).copied().unwrap_or(0.0);
         }
         let p = solve_dense(a, r, n).ok_or_else(|| ImpactError::Step {
             time: format!("{time:.6}"),
@@ -232,13 +270,22 @@ impl<'a> March<'a> {
         Ok((p, force))
     }
 
-    /// Displacement at x_i at t_n from the history and the current pressures.
-    fn displacement(&self, i: usize, hist: &[f64], p: &[f64]) -> f64 {
-        hist[i]
-            + p.iter()
-                .enumerate()
-                .map(|(j, v)| self.current(i, j) * v)
-                .sum::<f64>()
+    /// The half-plane's and the striker's displacement at x_i at t_n from the histories and
+    /// the current pressures (the striker's 0 when rigid).
+    fn displacements(&self, i: usize, hist: &(Vec<f64>, Vec<f64>), p: &[f64]) -> (f64, f64) {
+        let (mut a, mut b) = (hist.0[i], hist.1.get(i).copied().unwrap_or(0.0));
+        for (j, v) in p.iter().enumerate() {
+            let (ca, cb) = self.current_parts(i, j);
+            a += ca * v;
+            b += cb * v;
+        }
+        (a, b)
+    }
+
+    /// The total approach w + w_s at x_i at t_n.
+    fn displacement(&self, i: usize, hist: &(Vec<f64>, Vec<f64>), p: &[f64]) -> f64 {
+        let (a, b) = self.displacements(i, hist, p);
+        a + b
     }
 
     /// Advances one step. Returns false when the striker has separated (free motion) and
@@ -348,16 +395,27 @@ impl<'a> March<'a> {
                 v0 - dt * f / mass,
             ),
         };
-        let w: Vec<f64> = (0..=imax)
-            .map(|i| self.displacement(i, &hist, &p))
-            .collect();
-        let prev_w = self.steps.last().map(|s| s.w.as_slice()).unwrap_or(&[]);
-        let mut dwork = 0.0;
+        let (w, ws): (Vec<f64>, Vec<f64>) =
+            (0..=imax).map(|i| self.displacements(i, &hist, &p)).unzip();
+        let ws = if self.striker.is_some() {
+            ws
+        } else {
+            Vec::new()
+        };
+        let prev = self.steps.last();
+        let prev_w = prev.map(|s| s.w.as_slice()).unwrap_or(&[]);
+        let prev_ws = prev.map(|s| s.ws.as_slice()).unwrap_or(&[]);
+        let (mut dwork, mut dwork_s) = (0.0, 0.0);
         for (j, pj) in p.iter().enumerate() {
             let before = prev_w.get(j).copied().unwrap_or(0.0);
             dwork += self.weight(j) * pj * (w[j] - before);
+            if let Some(now) = ws.get(j) {
+                let before = prev_ws.get(j).copied().unwrap_or(0.0);
+                dwork_s += self.weight(j) * pj * (now - before);
+            }
         }
-        let work = self.steps.last().map(|s| s.work).unwrap_or(0.0) + dwork;
+        let work = prev.map(|s| s.work).unwrap_or(0.0) + dwork;
+        let striker_work = prev.map(|s| s.striker_work).unwrap_or(0.0) + dwork_s;
         if !(h.is_finite() && v.is_finite() && f.is_finite()) {
             return Err(ImpactError::Step {
                 time: format!("{t:.6}"),
@@ -373,7 +431,9 @@ impl<'a> March<'a> {
             force: f,
             pressure: p,
             w,
+            ws,
             work,
+            striker_work,
         });
         Ok(true)
     }
