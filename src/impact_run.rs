@@ -1,8 +1,12 @@
-//! `impact run`: a rigid striker's transient impact on the half-plane (crate `impact`).
+//! `impact run`: a striker's transient impact on the half-plane (crate `impact`): rigid,
+//! elastic (local half-plane model) or a thin cylindrical shell.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use clap::Args;
-use impact::{Drive, EdgeLaw, ImpactCase, Profile, Solution, Value as Est};
+use impact::{
+    Drive, EdgeLaw, ImpactCase, Profile, ShellStriker, Solution, Striker, StrikerMaterial,
+    Value as Est,
+};
 use serde_json::{json, Map, Value};
 
 /// Arguments of `impact run`.
@@ -17,7 +21,11 @@ pub struct RunArgs {
     /// Poisson's ratio nu in (-1, 1/2), nu != 0 (instead of --c1, --c2).
     #[arg(long, allow_hyphen_values = true)]
     poisson: Option<f64>,
-    /// The striker: `rigid` (elastic and shell strikers are not available yet).
+    /// The striker: `rigid`; `elastic:c1=..,c2=..,density_ratio=..` (its wave speeds in m/s,
+    /// its density over the half-plane's; local half-plane model, valid until c1 t/R =
+    /// 2 c1/c1s); `shell:thickness_over_R=..,c1=..,c2=..,density_ratio=..` (a thin
+    /// cylindrical shell of radius R, its mass from its geometry). Deformable strikers need
+    /// the half-plane's --c1 and --c2.
     #[arg(long, default_value = "rigid")]
     striker: String,
     /// The profile: circle:R=.., parabola:R=.., power:A=..,k=.., wedge:theta_deg=..,
@@ -231,15 +239,70 @@ fn time_list(spec: &str, flag: &str) -> R<Vec<f64>> {
         .collect()
 }
 
-/// Builds the case from the arguments.
-pub fn case(a: &RunArgs) -> R<ImpactCase> {
-    if a.striker != "rigid" {
+/// The striker from `--striker` (speeds in m/s over the half-plane's c1 in m/s).
+fn striker(a: &RunArgs) -> R<Striker> {
+    let spec = a.striker.as_str();
+    if spec == "rigid" {
+        return Ok(Striker::Rigid);
+    }
+    let (kind, rest) = spec.split_once(':').ok_or_else(|| {
+        format!(
+            "invalid --striker {spec:?}: rigid, elastic:c1=..,c2=..,density_ratio=.. or \
+             shell:thickness_over_R=..,c1=..,c2=..,density_ratio=.."
+        )
+    })?;
+    let keys: &[&str] = match kind {
+        "elastic" => &["c1", "c2", "density_ratio"],
+        "shell" => &["thickness_over_R", "c1", "c2", "density_ratio"],
+        other => {
+            return Err(format!(
+                "invalid --striker kind {other:?}: one of rigid, elastic, shell"
+            ))
+        }
+    };
+    let pairs = kv(rest, "--striker")?;
+    let get = |k: &str| -> R<f64> {
+        let mut found = pairs.iter().filter(|(n, _)| n == k);
+        match (found.next(), found.next()) {
+            (Some(p), None) => Ok(p.1),
+            _ => Err(format!(
+                "invalid --striker {spec:?}: {kind} needs {} (each once)",
+                keys.iter().map(|k| format!("{k}=..")).collect::<Vec<_>>().join(",")
+            )),
+        }
+    };
+    if let Some((k, _)) = pairs.iter().find(|(n, _)| !keys.contains(&n.as_str())) {
         return Err(format!(
-            "invalid --striker {:?}: only rigid strikers are available",
-            a.striker
+            "invalid --striker {spec:?}: unknown key {k:?} (keys: {})",
+            keys.join(", ")
         ));
     }
+    let c1 = match (a.c1, a.c2, a.poisson) {
+        (Some(c1), Some(_), None) => c1,
+        _ => {
+            return Err(format!(
+                "--striker {kind} gives its wave speeds in m/s: give the half-plane's --c1 and --c2 (m/s) instead of --poisson"
+            ))
+        }
+    };
+    let material = StrikerMaterial {
+        c1_ratio: get("c1")? / c1,
+        c2_ratio: get("c2")? / c1,
+        density_ratio: get("density_ratio")?,
+    };
+    Ok(match kind {
+        "elastic" => Striker::Elastic(material),
+        _ => Striker::Shell(ShellStriker {
+            thickness: get("thickness_over_R")?,
+            material,
+        }),
+    })
+}
+
+/// Builds the case from the arguments.
+pub fn case(a: &RunArgs) -> R<ImpactCase> {
     let nu = poisson(a)?;
+    let striker = striker(a)?;
     let prof = profile(&a.profile, a.length)?;
     let law = match a.law.as_str() {
         "signorini" => EdgeLaw::Signorini,
@@ -267,6 +330,21 @@ pub fn case(a: &RunArgs) -> R<ImpactCase> {
                 ));
             }
         }
+        (None, Some(_), _) if matches!(striker, Striker::Shell(_)) => {
+            return Err(
+                "contradictory flags: --mass-ratio with --striker shell (the shell's mass follows from its thickness and density)"
+                    .into(),
+            )
+        }
+        (None, None, Some(v)) if matches!(striker, Striker::Shell(_)) => {
+            let Striker::Shell(s) = striker else {
+                unreachable!()
+            };
+            Drive::Free {
+                mass_ratio: s.mass_ratio(),
+                v0_over_c1: v,
+            }
+        }
         (None, Some(m), Some(v)) => Drive::Free {
             mass_ratio: m,
             v0_over_c1: v,
@@ -274,7 +352,7 @@ pub fn case(a: &RunArgs) -> R<ImpactCase> {
         (None, None, _) => return Err("missing --mass-ratio (or --driven)".into()),
         (None, _, None) => return Err("missing --v0-over-c1 (or --driven)".into()),
     };
-    let mut c = ImpactCase::new(nu, prof, drive, law, end[0]);
+    let mut c = ImpactCase::new(nu, prof, drive, law, end[0]).with_striker(striker);
     c.dx = a.dx;
     c.kappa = a.kappa;
     c.levels = a.levels;
@@ -300,7 +378,25 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
     let mut out = Map::new();
     out.insert("version".into(), json!(version));
     out.insert("law".into(), json!(sol.case.law.name()));
-    out.insert("striker".into(), json!("rigid"));
+    out.insert("striker".into(), json!(sol.case.striker.name()));
+    match &sol.case.striker {
+        Striker::Rigid => {}
+        Striker::Elastic(mat) => {
+            out.insert(
+                "striker_model".into(),
+                json!({"c1_over_c1": mat.c1_ratio, "c2_over_c1": mat.c2_ratio, "density_ratio": mat.density_ratio,
+                       "model": "local half-plane", "valid_until_c1t_over_R": sol.case.striker.validity_end()}),
+            );
+        }
+        Striker::Shell(s) => {
+            out.insert(
+                "striker_model".into(),
+                json!({"thickness_over_R": s.thickness, "c1_over_c1": s.material.c1_ratio, "c2_over_c1": s.material.c2_ratio,
+                       "density_ratio": s.material.density_ratio, "mass_ratio": s.mass_ratio(),
+                       "model": "Timoshenko ring (membrane, bending, transverse shear, rotary inertia)"}),
+            );
+        }
+    }
     out.insert("profile".into(), json!(sol.case.profile.label()));
     out.insert("poisson".into(), json!(sol.case.poisson));
     out.insert("c2_over_c1".into(), json!(sol.m));
@@ -334,6 +430,31 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
         "work_over_rho_c1sq_Rsq",
         rows.iter().map(|r| est(&r.work)).collect(),
     );
+    if !matches!(sol.case.striker, Striker::Rigid) {
+        col(
+            "striker_deformation_over_R",
+            rows.iter()
+                .map(|r| est(&r.striker_deformation.expect("deformable striker")))
+                .collect(),
+        );
+        col(
+            "striker_energy_over_rho_c1sq_Rsq",
+            rows.iter()
+                .map(|r| est(&r.striker_energy.expect("deformable striker")))
+                .collect(),
+        );
+    }
+    if let Some(parts) = sol.shell_energy_history(&rows) {
+        let parts = parts.map_err(|e| e.to_string())?;
+        col(
+            "striker_strain_energy_over_rho_c1sq_Rsq",
+            parts.iter().map(|p| est(&p.0)).collect(),
+        );
+        col(
+            "striker_vibration_energy_over_rho_c1sq_Rsq",
+            parts.iter().map(|p| est(&p.1)).collect(),
+        );
+    }
     out.insert(
         "c1t_over_R".into(),
         Value::Array(rows.iter().map(|r| json!(r.t)).collect()),
@@ -390,7 +511,11 @@ pub fn csv(v: &Value, cmdline: &str) -> String {
     ));
     s.push_str(&format!("# command: {cmdline}\n"));
     s.push_str(&format!(
-        "# law: {}; profile: {}; poisson: {}; grid: {}\n",
+        "# striker: {}{}; law: {}; profile: {}; poisson: {}; grid: {}\n",
+        v["striker"].as_str().unwrap_or(""),
+        v.get("striker_model")
+            .map(|m| format!(" {m}"))
+            .unwrap_or_default(),
         v["law"].as_str().unwrap_or(""),
         v["profile"].as_str().unwrap_or(""),
         v["poisson"],
@@ -408,6 +533,10 @@ pub fn csv(v: &Value, cmdline: &str) -> String {
         "force_over_rho_c1sq_R",
         "kinetic_energy_over_rho_c1sq_Rsq",
         "work_over_rho_c1sq_Rsq",
+        "striker_deformation_over_R",
+        "striker_energy_over_rho_c1sq_Rsq",
+        "striker_strain_energy_over_rho_c1sq_Rsq",
+        "striker_vibration_energy_over_rho_c1sq_Rsq",
     ]
     .into_iter()
     .filter(|k| v.get(*k).is_some())

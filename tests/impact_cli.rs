@@ -404,3 +404,152 @@ fn edge_prints_exponents_per_range_and_refuses_bad_speeds() {
         assert!(err.contains(word), "{err}");
     }
 }
+
+/// Deformable strikers through the command line: the striker's model, its deformation and
+/// energy with error estimates, the shell's strain and vibration energies; a driven flat punch
+/// of an elastic material gives the one-dimensional impedance pressure
+/// V/(1/(rho c1) + 1/(rho_s c1s)); the flags that contradict the model are refused.
+#[test]
+fn run_deformable_strikers() {
+    let base = [
+        "run",
+        "--c1",
+        "1870.83",
+        "--c2",
+        "1000",
+        "--profile",
+        "circle:R=1",
+        "--v0-over-c1",
+        "0.01",
+        "--dx",
+        "0.02",
+        "--json",
+    ];
+    let mut args = base.to_vec();
+    args.extend([
+        "--striker",
+        "shell:thickness_over_R=0.05,c1=5000,c2=3000,density_ratio=3",
+        "--end",
+        "c1t/R=1.5",
+    ]);
+    let v = json(&args);
+    assert_eq!(v["striker"], "shell");
+    let mass = num(&v["striker_model"]["mass_ratio"]);
+    assert!((mass - 2.0 * std::f64::consts::PI * 0.05 * 3.0).abs() < 1e-12);
+    let n = v["c1t_over_R"].as_array().unwrap().len();
+    for k in [
+        "striker_deformation_over_R",
+        "striker_energy_over_rho_c1sq_Rsq",
+        "striker_strain_energy_over_rho_c1sq_Rsq",
+        "striker_vibration_energy_over_rho_c1sq_Rsq",
+    ] {
+        assert_eq!(v[k].as_array().unwrap().len(), n, "{k}");
+        assert!(v["error_estimate"][k][n - 1].is_number(), "{k}");
+    }
+    // strain + vibration = the work of the pressure on the shell
+    let last = |k: &str| num(&v[k][n - 1]);
+    let parts = last("striker_strain_energy_over_rho_c1sq_Rsq")
+        + last("striker_vibration_energy_over_rho_c1sq_Rsq");
+    let total = last("striker_energy_over_rho_c1sq_Rsq");
+    assert!((parts - total).abs() < 1e-9 * total, "{parts} vs {total}");
+
+    // elastic, driven flat punch: the plane-wave pressure of two impedances in series
+    let (c1, rho_ratio, c1s) = (1870.83, 2.0, 4000.0);
+    let v = json(&[
+        "run",
+        "--c1",
+        "1870.83",
+        "--c2",
+        "1000",
+        "--striker",
+        "elastic:c1=4000,c2=2000,density_ratio=2",
+        "--profile",
+        "flat:a=1",
+        "--driven",
+        "speed:V_over_c1=0.01",
+        "--end",
+        "c1t/R=0.5",
+        "--pressure-at",
+        "c1t/R=0.2",
+        "--dx",
+        "0.02",
+        "--levels",
+        "1",
+        "--json",
+    ]);
+    assert_eq!(v["striker"], "elastic");
+    let p = &v["pressure"][0];
+    let want = 0.01 / (1.0 + c1 / (rho_ratio * c1s));
+    let p0 = num(&p["p_over_rho_c1sq"][0]);
+    assert!((p0 / want - 1.0).abs() < 1e-9, "{p0} vs {want}");
+
+    // refusals, one line each
+    for (extra, word) in [
+        (
+            vec![
+                "--striker",
+                "shell:thickness_over_R=0.05,c1=5000,c2=3000,density_ratio=3",
+                "--mass-ratio",
+                "2",
+                "--end",
+                "c1t/R=1",
+            ],
+            "--mass-ratio",
+        ),
+        (
+            vec![
+                "--striker",
+                "elastic:c1=5900,c2=3200,density_ratio=3",
+                "--mass-ratio",
+                "2",
+                "--end",
+                "c1t/R=1",
+            ],
+            "end time",
+        ),
+        (
+            vec![
+                "--striker",
+                "elastic:c1=5900,c2=3200",
+                "--mass-ratio",
+                "2",
+                "--end",
+                "c1t/R=0.5",
+            ],
+            "density_ratio",
+        ),
+        (
+            vec![
+                "--striker",
+                "shell:thickness_over_R=0.9,c1=5000,c2=3000,density_ratio=3",
+                "--end",
+                "c1t/R=0.5",
+            ],
+            "thickness",
+        ),
+    ] {
+        let mut args = base.to_vec();
+        args.extend(extra);
+        let (code, out, err) = impact(&args);
+        assert_eq!(code, 2, "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(word), "{args:?}: {err}");
+    }
+    let (code, _, err) = impact(&[
+        "run",
+        "--poisson",
+        "0.3",
+        "--striker",
+        "elastic:c1=5900,c2=3200,density_ratio=3",
+        "--profile",
+        "circle:R=1",
+        "--mass-ratio",
+        "2",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "c1t/R=0.5",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--c1"), "{err}");
+}

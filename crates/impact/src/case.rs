@@ -599,10 +599,13 @@ impl Solution {
     /// step of the finest grid, (c1 t/R, strain, kinetic), by the modal recursion of
     /// [`shell_energies`] (independent of the coefficient tables); `None` for other strikers.
     pub fn shell_energies(&self) -> Option<Result<Vec<(f64, f64, f64)>>> {
+        self.run_shell_energies(&self.runs[0])
+    }
+
+    fn run_shell_energies(&self, run: &Run) -> Option<Result<Vec<(f64, f64, f64)>>> {
         let Striker::Shell(shell) = &self.case.striker else {
             return None;
         };
-        let run = &self.runs[0];
         let m2 = self.m * self.m;
         Some((|| {
             let ring = Ring::new(shell, self.m)?;
@@ -615,6 +618,54 @@ impl Solution {
                 .map(|(s, (u, k))| (s.t, u * m2, k * m2))
                 .collect())
         })())
+    }
+
+    /// The shell striker's (strain, vibration kinetic) energy over rho c1^2 R^2 at the times
+    /// of `rows` (from [`Solution::history`]), each with an error estimate: four times the
+    /// difference between the two finest levels (the factor of the history's estimates),
+    /// plus the modal truncation bound. `None` for other strikers.
+    pub fn shell_energy_history(&self, rows: &[HistoryRow]) -> Option<Result<Vec<(Value, Value)>>> {
+        let fine = match self.run_shell_energies(&self.runs[0])? {
+            Ok(v) => v,
+            Err(e) => return Some(Err(e)),
+        };
+        let coarse = match self.runs.get(1).map(|r| self.run_shell_energies(r)) {
+            Some(Some(Ok(v))) => Some(v),
+            Some(Some(Err(e))) => return Some(Err(e)),
+            _ => None,
+        };
+        let at = |list: &[(f64, f64, f64)], dt: f64, t: f64| -> Option<(f64, f64)> {
+            let n = (t / dt).round() as usize;
+            (n >= 1).then(|| list.get(n - 1).map(|e| (e.1, e.2))).flatten()
+        };
+        let mut out = Vec::with_capacity(rows.len());
+        for r in rows {
+            let (u, k) = match at(&fine, self.runs[0].dt, r.t) {
+                Some(v) => v,
+                None => {
+                    return Some(Err(ImpactError::Step {
+                        time: format!("{:.6}", r.t),
+                        reason: "no step of the finest grid at this report time".into(),
+                    }))
+                }
+            };
+            let floor = self.runs[0].coefficient_error * (u + k).abs();
+            let err = coarse.as_ref().and_then(|c| {
+                at(c, self.runs[1].dt, r.t)
+                    .map(|(uc, kc)| (4.0 * (u - uc).abs() + floor, 4.0 * (k - kc).abs() + floor))
+            });
+            out.push((
+                Value {
+                    value: u,
+                    err: err.map(|e| e.0),
+                },
+                Value {
+                    value: k,
+                    err: err.map(|e| e.1),
+                },
+            ));
+        }
+        Some(Ok(out))
     }
 
     /// Peak force over rho c1^2 R and its time, on the finest grid.
