@@ -151,6 +151,7 @@ fn every_figure_writes_csv_png_svg_with_metadata() {
         "fig7",
         "regime_map",
         "field_snapshot",
+        "impact_strikers",
     ] {
         let csv = Csv::read(&d.join(format!("{name}.csv")));
         assert_eq!(
@@ -725,6 +726,7 @@ fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
         ("regime_map", None),
         ("field_snapshot", None),
         ("error_vs_time", None),
+        ("impact_strikers", Some((1600, 1200))),
     ] {
         let png = decode_png(&d.join(format!("{name}.png")));
         let svg = svg_size(&d.join(format!("{name}.svg")));
@@ -757,4 +759,49 @@ fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
             );
         }
     }
+}
+
+/// The striker comparison: the rigid rows equal a direct library solve of the same case; the
+/// elastic rows stop where the local half-plane model ends (c1 t/R = 2 c1/c1s); the rigid
+/// striker takes no energy; the softer shell lets its mass centre go deeper and presses less.
+#[test]
+fn impact_strikers_compares_equal_masses() {
+    use impact::{Drive, EdgeLaw, ImpactCase, Profile};
+    let csv = Csv::read(&quick_all().join("impact_strikers.csv"));
+    let rows = |name: &str| -> Vec<&HashMap<String, String>> {
+        csv.rows.iter().filter(|r| text(r, "striker") == name).collect()
+    };
+    let (rigid, elastic, shell) = (rows("rigid"), rows("elastic"), rows("shell"));
+    assert!(rigid.len() > 10 && shell.len() == rigid.len());
+    let end_elastic = 2.0 * 1870.83 / 5900.0;
+    assert!(!elastic.is_empty());
+    assert!(elastic.iter().all(|r| num(r, "c1t_over_R") <= end_elastic + 1e-12));
+    assert!(rigid.iter().all(|r| num(r, "striker_energy_share") == 0.0));
+    // the same rigid case through the library
+    let m2 = (1000.0f64 / 1870.83).powi(2);
+    let nu = (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2));
+    let mass = 2.0 * std::f64::consts::PI * 0.05 * 3.0;
+    let mut case = ImpactCase::new(
+        nu,
+        Profile::Parabola { radius: 1.0 },
+        Drive::Free {
+            mass_ratio: mass,
+            v0_over_c1: 0.01,
+        },
+        EdgeLaw::Signorini,
+        1.0,
+    );
+    case.dx = 0.02;
+    case.levels = 2;
+    let (lib, _) = case.solve(|_| {}).unwrap().history();
+    assert_eq!(lib.len(), rigid.len());
+    for (l, r) in lib.iter().zip(&rigid) {
+        assert_close("rigid h", num(r, "h_over_R"), l.h.value);
+        assert_close("rigid force", num(r, "force_over_rho_c1sq_R"), l.force.value);
+    }
+    let (lr, ls) = (rigid.last().unwrap(), shell.last().unwrap());
+    assert!(num(ls, "h_over_R") > num(lr, "h_over_R"));
+    assert!(num(ls, "force_over_rho_c1sq_R") < num(lr, "force_over_rho_c1sq_R"));
+    let share = num(ls, "striker_energy_share");
+    assert!(share > 0.0 && share < 1.0, "shell share {share}");
 }

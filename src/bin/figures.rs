@@ -84,6 +84,11 @@ const FIGURES: &[Entry] = &[
         about: "relative error against run time, f64 and MPFR paths, against a 400-bit reference",
         draw: figures::error_vs_time::error_vs_time,
     },
+    Entry {
+        name: "impact_strikers",
+        about: "rigid, elastic and thin-shell strikers of equal mass and impact speed: h, force, b and the striker's energy against c1 t/R",
+        draw: figures::impact_strikers::impact_strikers,
+    },
 ];
 
 /// Redraw the reference paper's figures (and a regime map) from the library.
@@ -98,7 +103,7 @@ const FIGURES: &[Entry] = &[
 )]
 struct Cli {
     /// Figures to draw (default: all). Names: fig3 fig4 fig5 fig6 fig7 regime_map
-    /// field_snapshot.
+    /// field_snapshot error_vs_time impact_strikers.
     names: Vec<String>,
     /// Output directory (created if missing).
     #[arg(long, default_value = "figures")]

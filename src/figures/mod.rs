@@ -11,6 +11,7 @@
 pub mod contour;
 pub mod error_vs_time;
 pub mod field_snapshot;
+pub mod impact_strikers;
 pub mod output;
 pub mod paper;
 pub mod plot;
@@ -75,6 +76,12 @@ impl std::error::Error for FigError {}
 
 impl From<WedgeError> for FigError {
     fn from(e: WedgeError) -> Self {
+        FigError(e.to_string())
+    }
+}
+
+impl From<impact::ImpactError> for FigError {
+    fn from(e: impact::ImpactError) -> Self {
         FigError(e.to_string())
     }
 }

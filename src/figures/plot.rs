@@ -227,7 +227,8 @@ pub struct Page {
     pub width: u32,
     /// Height in pixels.
     pub height: u32,
-    /// Panels, left to right (or top to bottom when `stacked`).
+    /// Panels, left to right (or top to bottom when `stacked`; more than three side by side
+    /// fill two columns row by row).
     pub panels: Vec<Panel>,
     /// Panels one above the other instead of side by side.
     pub stacked: bool,
@@ -335,7 +336,13 @@ pub fn render_png(svg: &str, width: u32, height: u32) -> Result<Vec<u8>> {
 fn draw_page<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, page: &Page) -> Result<()> {
     root.fill(&WHITE).map_err(draw_err(page.name))?;
     let n = page.panels.len().max(1);
-    let areas = root.split_evenly(if page.stacked { (n, 1) } else { (1, n) });
+    let areas = root.split_evenly(if page.stacked {
+        (n, 1)
+    } else if n > 3 {
+        (n.div_ceil(2), 2)
+    } else {
+        (1, n)
+    });
     for (area, panel) in areas.iter().zip(&page.panels) {
         let (x, y) = (&panel.x, &panel.y);
         match (x.log, y.log) {

@@ -254,7 +254,9 @@ impl ImpactCase {
                 dx,
                 self.kappa,
             );
-            let nsteps = (self.end / march.dt()).round() as usize;
+            // the nearest step to the end time, never past the striker model's validity
+            let valid = (self.striker.validity_end() / march.dt() + 1e-9).floor();
+            let nsteps = (self.end / march.dt()).round().min(valid) as usize;
             let weight = 0.25f64.powi(level as i32) / total;
             for n in 0..nsteps {
                 if !march.step()? {

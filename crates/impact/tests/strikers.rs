@@ -446,6 +446,14 @@ fn deformable_striker_inputs_are_checked() {
         free_parabola(0.3, 10.0, 0.01, 1.5, 0.01).with_striker(Striker::Elastic(mat)),
         "end time",
     );
+    // at the validity end itself the march stops on the last step before it, not the nearest
+    let valid = Striker::Elastic(mat).validity_end();
+    let sol = free_parabola(0.3, 10.0, 0.01, valid, 0.01)
+        .with_striker(Striker::Elastic(mat))
+        .solve(|_| {})
+        .unwrap();
+    let last = sol.runs[0].steps.last().unwrap().t;
+    assert!(last <= valid && last > valid - 0.02, "last step {last}, valid to {valid}");
     let bad = StrikerMaterial {
         c2_ratio: 1.4,
         ..mat

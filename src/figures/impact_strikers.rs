@@ -1,0 +1,195 @@
+//! `impact_strikers`: a rigid, an elastic and a thin-shell striker of equal mass and impact
+//! speed on the same half-plane (`docs/strikers.md`): penetration of the mass centre, contact
+//! force, contact half-width and the share of the impact energy taken up by the striker.
+//!
+//! The half-plane is the paper's material (c2/c1 = 1000/1870.83); the strikers are of a steel
+//! (c1s = 5900 m/s, c2s = 3200 m/s, three times the half-plane's density): the shell has
+//! h_s/R = 0.05, whose mass m0/(rho R^2) = 2 pi 0.05 3 = 0.942 the other two share; V0/c1 =
+//! 0.01, parabolic profile of radius R, Signorini edge. The elastic striker's local
+//! half-plane model holds until c1 t/R = 2 c1/c1s = 0.634, where its curves stop.
+
+use std::path::PathBuf;
+
+use impact::{
+    Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, ShellStriker, Striker, StrikerMaterial,
+};
+
+use super::output::{Cell, Column, Table};
+use super::plot::{save, Axis, Dash, Legend, Page, Panel, Series};
+use super::{cycle_color, Ctx, FigError, Result, Summary};
+
+const C1: f64 = 1870.83;
+const C2: f64 = 1000.0;
+const STEEL: (f64, f64, f64) = (5900.0, 3200.0, 3.0);
+const THICKNESS: f64 = 0.05;
+const V0: f64 = 0.01;
+
+fn strikers() -> Vec<(&'static str, Striker)> {
+    let material = StrikerMaterial {
+        c1_ratio: STEEL.0 / C1,
+        c2_ratio: STEEL.1 / C1,
+        density_ratio: STEEL.2,
+    };
+    vec![
+        ("rigid", Striker::Rigid),
+        ("elastic", Striker::Elastic(material)),
+        (
+            "shell",
+            Striker::Shell(ShellStriker {
+                thickness: THICKNESS,
+                material,
+            }),
+        ),
+    ]
+}
+
+fn solve(striker: Striker, end: f64, dx: f64) -> Result<Vec<HistoryRow>> {
+    let nu = {
+        let m2 = (C2 / C1).powi(2);
+        (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2))
+    };
+    let mass_ratio = ShellStriker {
+        thickness: THICKNESS,
+        material: StrikerMaterial {
+            c1_ratio: 1.0,
+            c2_ratio: 0.5,
+            density_ratio: STEEL.2,
+        },
+    }
+    .mass_ratio();
+    let end = end.min(striker.validity_end());
+    let mut case = ImpactCase::new(
+        nu,
+        Profile::Parabola { radius: 1.0 },
+        Drive::Free {
+            mass_ratio,
+            v0_over_c1: V0,
+        },
+        EdgeLaw::Signorini,
+        end,
+    )
+    .with_striker(striker);
+    case.dx = dx;
+    case.levels = 2;
+    let sol = case
+        .solve(|_| {})
+        .map_err(|e| FigError(format!("{} striker: {e}", striker.name())))?;
+    Ok(sol.history().0)
+}
+
+/// impact_strikers: rigid, elastic and shell strikers of equal mass and speed.
+pub fn impact_strikers(ctx: &Ctx) -> Result<Summary> {
+    let (end, dx) = if ctx.quick { (1.0, 0.02) } else { (3.0, 0.005) };
+    let list = strikers();
+    ctx.plan(list.len());
+    let mut runs = Vec::new();
+    for (name, s) in &list {
+        runs.push((*name, solve(*s, end, dx)?));
+        ctx.tick();
+    }
+    let mut table = Table::new(
+        "impact_strikers",
+        "rigid, elastic (local half-plane model) and thin-shell strikers of equal mass and impact speed",
+        vec![
+            Column { name: "striker", meaning: "rigid, elastic or shell" },
+            Column { name: "c1t_over_R", meaning: "time c1 t/R" },
+            Column { name: "h_over_R", meaning: "penetration of the mass centre h/R" },
+            Column { name: "err_h_over_R", meaning: "its absolute error estimate (two grids)" },
+            Column { name: "b_over_R", meaning: "contact half-width b/R" },
+            Column { name: "err_b_over_R", meaning: "its absolute error estimate" },
+            Column { name: "force_over_rho_c1sq_R", meaning: "contact force per unit length over rho c1^2 R" },
+            Column { name: "err_force_over_rho_c1sq_R", meaning: "its absolute error estimate" },
+            Column { name: "striker_energy_share", meaning: "energy taken up by the striker's deformation over the impact energy (0 for the rigid striker)" },
+        ],
+    );
+    table.param(format!(
+        "material: c1 = {C1} m/s, c2 = {C2} m/s (the half-plane)"
+    ));
+    table.param(format!(
+        "half-plane c1 = {C1} m/s, c2 = {C2} m/s; strikers c1s = {} m/s, c2s = {} m/s, rho_s/rho = {}; shell h_s/R = {THICKNESS}; equal mass m0/(rho R^2) = 2 pi h_s/R rho_s/rho; V0/c1 = {V0}; parabola of radius R; signorini edge; dx/R = {dx}, kappa = 2, two grids",
+        STEEL.0, STEEL.1, STEEL.2
+    ));
+    let mass = 2.0 * std::f64::consts::PI * THICKNESS * STEEL.2;
+    let ke0 = 0.5 * mass * V0 * V0;
+    let err = |v: &impact::Value| v.err.map(Cell::Num).unwrap_or(Cell::Empty);
+    for (name, rows) in &runs {
+        for r in rows {
+            let share = r.striker_energy.map(|e| e.value / ke0).unwrap_or(0.0);
+            table.push(vec![
+                Cell::from(*name),
+                r.t.into(),
+                r.h.value.into(),
+                err(&r.h),
+                r.b.value.into(),
+                err(&r.b),
+                r.force.value.into(),
+                err(&r.force),
+                share.into(),
+            ])?;
+        }
+    }
+    let path: PathBuf = table.write(&ctx.out)?;
+    let panel = |title: &str, ylabel: &str, get: &dyn Fn(&HistoryRow) -> f64, legend, pad| {
+        let all = runs.iter().flat_map(|(_, rows)| rows.iter().map(get));
+        let mut p = Panel::new(
+            title,
+            Axis::lin("c1 t/R", 0.0, end),
+            Axis::fit(ylabel, all.chain([0.0]), pad),
+            legend,
+        );
+        for (k, (name, rows)) in runs.iter().enumerate() {
+            let label = if *name == "elastic" {
+                format!("elastic (local model, to c1 t/R = {:.3})", 2.0 * C1 / STEEL.0)
+            } else {
+                name.to_string()
+            };
+            let pts = rows.iter().map(|r| (r.t, get(r))).collect();
+            let dash = [Dash::Solid, Dash::Dashed, Dash::Dotted][k % 3];
+            p.series
+                .push(Series::new(label, pts, cycle_color(k * 2 + 1), dash).width(3));
+        }
+        p
+    };
+    let page = Page {
+        name: "impact_strikers",
+        width: 1600,
+        height: 1200,
+        panels: vec![
+            panel(
+                "penetration of the mass centre",
+                "h/R",
+                &|r| r.h.value,
+                Legend::UpperLeft,
+                0.05,
+            ),
+            panel(
+                "contact force",
+                "force / (rho c1^2 R)",
+                &|r| r.force.value,
+                Legend::UpperRight,
+                0.4,
+            ),
+            panel(
+                "contact half-width",
+                "b/R",
+                &|r| r.b.value,
+                Legend::LowerRight,
+                0.05,
+            ),
+            panel(
+                "energy taken up by the striker",
+                "share of the impact energy",
+                &|r| r.striker_energy.map(|e| e.value / ke0).unwrap_or(0.0),
+                Legend::UpperLeft,
+                0.05,
+            ),
+        ],
+        stacked: false,
+    };
+    let mut files = vec![path];
+    files.extend(save(&ctx.out, &page)?);
+    Ok(Summary {
+        files,
+        points: runs.iter().map(|(_, r)| r.len()).sum(),
+    })
+}
