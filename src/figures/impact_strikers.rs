@@ -129,12 +129,14 @@ pub fn impact_strikers(ctx: &Ctx) -> Result<Summary> {
         }
     }
     let path: PathBuf = table.write(&ctx.out)?;
-    let panel = |title: &str, ylabel: &str, get: &dyn Fn(&HistoryRow) -> f64, legend, pad| {
-        let all = runs.iter().flat_map(|(_, rows)| rows.iter().map(get));
+    let panel = |title: &str, ylabel: &str, get: &dyn Fn(&HistoryRow) -> f64, legend, headroom: f64| {
+        // `headroom` above the largest value leaves the legend clear of the curves
+        let all = || runs.iter().flat_map(|(_, rows)| rows.iter().map(get));
+        let top = all().fold(0.0, f64::max) * headroom;
         let mut p = Panel::new(
             title,
             Axis::lin("c1 t/R", 0.0, end),
-            Axis::fit(ylabel, all.chain([0.0]), pad),
+            Axis::fit(ylabel, all().chain([0.0, top]), 0.05),
             legend,
         );
         for (k, (name, rows)) in runs.iter().enumerate() {
@@ -160,28 +162,28 @@ pub fn impact_strikers(ctx: &Ctx) -> Result<Summary> {
                 "h/R",
                 &|r| r.h.value,
                 Legend::UpperLeft,
-                0.05,
+                1.0,
             ),
             panel(
                 "contact force",
                 "force / (rho c1^2 R)",
                 &|r| r.force.value,
                 Legend::UpperRight,
-                0.4,
+                1.35,
             ),
             panel(
                 "contact half-width",
                 "b/R",
                 &|r| r.b.value,
                 Legend::LowerRight,
-                0.05,
+                1.0,
             ),
             panel(
                 "energy taken up by the striker",
                 "share of the impact energy",
                 &|r| r.striker_energy.map(|e| e.value / ke0).unwrap_or(0.0),
                 Legend::UpperLeft,
-                0.05,
+                1.0,
             ),
         ],
         stacked: false,
