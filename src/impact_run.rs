@@ -267,7 +267,10 @@ fn striker(a: &RunArgs) -> R<Striker> {
             (Some(p), None) => Ok(p.1),
             _ => Err(format!(
                 "invalid --striker {spec:?}: {kind} needs {} (each once)",
-                keys.iter().map(|k| format!("{k}=..")).collect::<Vec<_>>().join(",")
+                keys.iter()
+                    .map(|k| format!("{k}=.."))
+                    .collect::<Vec<_>>()
+                    .join(",")
             )),
         }
     };

@@ -769,13 +769,18 @@ fn impact_strikers_compares_equal_masses() {
     use impact::{Drive, EdgeLaw, ImpactCase, Profile};
     let csv = Csv::read(&quick_all().join("impact_strikers.csv"));
     let rows = |name: &str| -> Vec<&HashMap<String, String>> {
-        csv.rows.iter().filter(|r| text(r, "striker") == name).collect()
+        csv.rows
+            .iter()
+            .filter(|r| text(r, "striker") == name)
+            .collect()
     };
     let (rigid, elastic, shell) = (rows("rigid"), rows("elastic"), rows("shell"));
     assert!(rigid.len() > 10 && shell.len() == rigid.len());
     let end_elastic = 2.0 * 1870.83 / 5900.0;
     assert!(!elastic.is_empty());
-    assert!(elastic.iter().all(|r| num(r, "c1t_over_R") <= end_elastic + 1e-12));
+    assert!(elastic
+        .iter()
+        .all(|r| num(r, "c1t_over_R") <= end_elastic + 1e-12));
     assert!(rigid.iter().all(|r| num(r, "striker_energy_share") == 0.0));
     // the same rigid case through the library
     let m2 = (1000.0f64 / 1870.83).powi(2);
@@ -797,7 +802,11 @@ fn impact_strikers_compares_equal_masses() {
     assert_eq!(lib.len(), rigid.len());
     for (l, r) in lib.iter().zip(&rigid) {
         assert_close("rigid h", num(r, "h_over_R"), l.h.value);
-        assert_close("rigid force", num(r, "force_over_rho_c1sq_R"), l.force.value);
+        assert_close(
+            "rigid force",
+            num(r, "force_over_rho_c1sq_R"),
+            l.force.value,
+        );
     }
     let (lr, ls) = (rigid.last().unwrap(), shell.last().unwrap());
     assert!(num(ls, "h_over_R") > num(lr, "h_over_R"));

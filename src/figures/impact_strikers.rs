@@ -129,29 +129,33 @@ pub fn impact_strikers(ctx: &Ctx) -> Result<Summary> {
         }
     }
     let path: PathBuf = table.write(&ctx.out)?;
-    let panel = |title: &str, ylabel: &str, get: &dyn Fn(&HistoryRow) -> f64, legend, headroom: f64| {
-        // `headroom` above the largest value leaves the legend clear of the curves
-        let all = || runs.iter().flat_map(|(_, rows)| rows.iter().map(get));
-        let top = all().fold(0.0, f64::max) * headroom;
-        let mut p = Panel::new(
-            title,
-            Axis::lin("c1 t/R", 0.0, end),
-            Axis::fit(ylabel, all().chain([0.0, top]), 0.05),
-            legend,
-        );
-        for (k, (name, rows)) in runs.iter().enumerate() {
-            let label = if *name == "elastic" {
-                format!("elastic (local model, to c1 t/R = {:.3})", 2.0 * C1 / STEEL.0)
-            } else {
-                name.to_string()
-            };
-            let pts = rows.iter().map(|r| (r.t, get(r))).collect();
-            let dash = [Dash::Solid, Dash::Dashed, Dash::Dotted][k % 3];
-            p.series
-                .push(Series::new(label, pts, cycle_color(k * 2 + 1), dash).width(3));
-        }
-        p
-    };
+    let panel =
+        |title: &str, ylabel: &str, get: &dyn Fn(&HistoryRow) -> f64, legend, headroom: f64| {
+            // `headroom` above the largest value leaves the legend clear of the curves
+            let all = || runs.iter().flat_map(|(_, rows)| rows.iter().map(get));
+            let top = all().fold(0.0, f64::max) * headroom;
+            let mut p = Panel::new(
+                title,
+                Axis::lin("c1 t/R", 0.0, end),
+                Axis::fit(ylabel, all().chain([0.0, top]), 0.05),
+                legend,
+            );
+            for (k, (name, rows)) in runs.iter().enumerate() {
+                let label = if *name == "elastic" {
+                    format!(
+                        "elastic (local model, to c1 t/R = {:.3})",
+                        2.0 * C1 / STEEL.0
+                    )
+                } else {
+                    name.to_string()
+                };
+                let pts = rows.iter().map(|r| (r.t, get(r))).collect();
+                let dash = [Dash::Solid, Dash::Dashed, Dash::Dotted][k % 3];
+                p.series
+                    .push(Series::new(label, pts, cycle_color(k * 2 + 1), dash).width(3));
+            }
+            p
+        };
     let page = Page {
         name: "impact_strikers",
         width: 1600,

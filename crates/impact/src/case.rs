@@ -638,7 +638,9 @@ impl Solution {
         };
         let at = |list: &[(f64, f64, f64)], dt: f64, t: f64| -> Option<(f64, f64)> {
             let n = (t / dt).round() as usize;
-            (n >= 1).then(|| list.get(n - 1).map(|e| (e.1, e.2))).flatten()
+            (n >= 1)
+                .then(|| list.get(n - 1).map(|e| (e.1, e.2)))
+                .flatten()
         };
         let mut out = Vec::with_capacity(rows.len());
         for r in rows {

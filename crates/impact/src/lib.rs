@@ -1,5 +1,6 @@
-//! Transient impact of a rigid striker on an elastic half-plane (plane strain), the second
-//! reference paper's eqs (3)-(8) with G0 = 0: the contact integral equation (7) marched in
+//! Transient impact of a striker on an elastic half-plane (plane strain), the second
+//! reference paper's eqs (3)-(8): rigid (G0 = 0), elastic or a thin cylindrical shell (G0 from
+//! [`striker`], `docs/strikers.md`). The contact integral equation (7) is marched in
 //! time on a uniform space-time grid whose influence coefficients are the Lamb crate's
 //! closed-form cell integrals, the striker's equation of motion (5)/(8), two edge laws
 //! (`kinematic`, eq (4); `signorini`, the unilateral conditions), the history reported with

@@ -1,5 +1,6 @@
 //! Time marching of the contact integral equation on one uniform grid (`docs/impact.md`,
-//! sections 2-4): eq (7) with G0 = 0 collocated at the cell centres at the end of each step,
+//! sections 2-4): eq (7) imposed on the cell means at the end of each step (the striker's G0
+//! added to the half-plane's coefficients, `docs/strikers.md`),
 //! the striker's equation of motion (5)/(8) integrated exactly for a force constant over the
 //! step, the contact set from the edge law.
 //!

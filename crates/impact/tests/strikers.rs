@@ -453,7 +453,10 @@ fn deformable_striker_inputs_are_checked() {
         .solve(|_| {})
         .unwrap();
     let last = sol.runs[0].steps.last().unwrap().t;
-    assert!(last <= valid && last > valid - 0.02, "last step {last}, valid to {valid}");
+    assert!(
+        last <= valid && last > valid - 0.02,
+        "last step {last}, valid to {valid}"
+    );
     let bad = StrikerMaterial {
         c2_ratio: 1.4,
         ..mat
