@@ -3,11 +3,10 @@
 //! first contact, the energy balance through the kernels, the 2-D Hertz relation in the
 //! quasi-static limit, convergence under refinement with the stated error estimates.
 
-use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile};
+mod common;
 
-fn m2(nu: f64) -> f64 {
-    (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
-}
+use common::{free_parabola, m2};
+use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile};
 
 /// A driven flat punch: wherever the P waves of both edges have not arrived, the pressure is
 /// exactly rho c1 V (a plane wave), in every step.
@@ -97,21 +96,6 @@ fn long_marches_have_no_growing_modes() {
             w[2].t
         );
     }
-}
-
-fn free_parabola(nu: f64, mass_ratio: f64, v0: f64, end: f64, dx: f64) -> ImpactCase {
-    let mut case = ImpactCase::new(
-        nu,
-        Profile::Parabola { radius: 1.0 },
-        Drive::Free {
-            mass_ratio,
-            v0_over_c1: v0,
-        },
-        EdgeLaw::Signorini,
-        end,
-    );
-    case.dx = dx;
-    case
 }
 
 /// The supersonic start: the contact pressure at the centre tends to the 1-D acoustic value

@@ -6,14 +6,13 @@
 //! (`tests/reference/shell_mpmath.py`), and the energy balance with the striker's strain and
 //! vibration energy from an exact modal recursion.
 
+mod common;
+
+use common::{history, m2};
 use impact::striker::Ring;
 use impact::{
     Drive, EdgeLaw, ImpactCase, ImpactError, Profile, ShellStriker, Striker, StrikerMaterial,
 };
-
-fn m2(nu: f64) -> f64 {
-    (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu))
-}
 
 fn own_material(nu: f64) -> StrikerMaterial {
     StrikerMaterial {
@@ -23,18 +22,9 @@ fn own_material(nu: f64) -> StrikerMaterial {
     }
 }
 
+/// A free parabola on one grid (no refinement levels).
 fn free_parabola(nu: f64, mass_ratio: f64, v0: f64, end: f64, dx: f64) -> ImpactCase {
-    let mut case = ImpactCase::new(
-        nu,
-        Profile::Parabola { radius: 1.0 },
-        Drive::Free {
-            mass_ratio,
-            v0_over_c1: v0,
-        },
-        EdgeLaw::Signorini,
-        end,
-    );
-    case.dx = dx;
+    let mut case = common::free_parabola(nu, mass_ratio, v0, end, dx);
     case.levels = 1;
     case
 }
@@ -179,11 +169,7 @@ fn stiff_strikers_tend_to_the_rigid_one() {
             .fold(0.0, f64::max)
     };
     // elastic: modulus ratio 4, 16, 64 through the density
-    let rigid = free_parabola(nu, 10.0, v0, end, dx)
-        .solve(|_| {})
-        .unwrap()
-        .history()
-        .0;
+    let rigid = history(free_parabola(nu, 10.0, v0, end, dx), Striker::Rigid);
     let gaps: Vec<f64> = [1.0, 4.0, 16.0]
         .iter()
         .map(|&d| {
@@ -192,12 +178,7 @@ fn stiff_strikers_tend_to_the_rigid_one() {
                 c2_ratio: 0.8,
                 density_ratio: d,
             };
-            let rows = free_parabola(nu, 10.0, v0, end, dx)
-                .with_striker(Striker::Elastic(mat))
-                .solve(|_| {})
-                .unwrap()
-                .history()
-                .0;
+            let rows = history(free_parabola(nu, 10.0, v0, end, dx), Striker::Elastic(mat));
             gap(&rows, &rigid)
         })
         .collect();
@@ -220,20 +201,14 @@ fn stiff_strikers_tend_to_the_rigid_one() {
         },
     };
     let mass = shell(1.0).mass_ratio();
-    let rigid = free_parabola(nu, mass, v0, end, dx)
-        .solve(|_| {})
-        .unwrap()
-        .history()
-        .0;
+    let rigid = history(free_parabola(nu, mass, v0, end, dx), Striker::Rigid);
     let gaps: Vec<f64> = [16.0, 64.0, 256.0]
         .iter()
         .map(|&s| {
-            let rows = free_parabola(nu, mass, v0, end, dx)
-                .with_striker(Striker::Shell(shell(s)))
-                .solve(|_| {})
-                .unwrap()
-                .history()
-                .0;
+            let rows = history(
+                free_parabola(nu, mass, v0, end, dx),
+                Striker::Shell(shell(s)),
+            );
             gap(&rows, &rigid)
         })
         .collect();
