@@ -727,6 +727,7 @@ fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
         ("field_snapshot", None),
         ("error_vs_time", None),
         ("impact_strikers", Some((1600, 1200))),
+        ("edge_exponents", Some((1600, 1200))),
     ] {
         let png = decode_png(&d.join(format!("{name}.png")));
         let svg = svg_size(&d.join(format!("{name}.svg")));
@@ -813,4 +814,49 @@ fn impact_strikers_compares_equal_masses() {
     assert!(num(ls, "force_over_rho_c1sq_R") < num(lr, "force_over_rho_c1sq_R"));
     let share = num(ls, "striker_energy_share");
     assert!(share > 0.0 && share < 1.0, "shell share {share}");
+}
+
+/// The edge exponents: every row equals the library's, and the documented values hold against
+/// closed forms computed here: +1/2 (free edge) and -1/2 (prescribed edge) below c_R, -1/2 for
+/// both between c_R and c2, -theta/pi with theta = arctan(A/B), A = (2 - D^2/c2^2)^2,
+/// B = 4 (1 - D^2/c1^2)^(1/2) (D^2/c2^2 - 1)^(1/2) between c2 and c1, and 0 above c1.
+#[test]
+fn edge_exponents_match_the_library_and_the_closed_forms() {
+    use lamb::edge::EdgeLaw;
+    let csv = Csv::read(&quick_all().join("edge_exponents.csv"));
+    assert!(csv.header.iter().any(|h| h.starts_with("column ")));
+    let mut seen = std::collections::BTreeSet::new();
+    for r in &csv.rows {
+        let (nu, d) = (num(r, "poisson"), num(r, "speed_over_c1"));
+        let hp = lamb::HalfPlane::from_poisson(nu).unwrap();
+        let (sig, kin) = (num(r, "selected_signorini"), num(r, "selected_kinematic"));
+        let lib_s = hp.edge_behaviour(d, EdgeLaw::Signorini).unwrap();
+        let lib_k = hp.edge_behaviour(d, EdgeLaw::Kinematic).unwrap();
+        assert_close("signorini", sig, lib_s.selected);
+        assert_close("kinematic", kin, lib_k.selected);
+        let range = text(r, "range");
+        assert_eq!(range, lib_s.range.name());
+        seen.insert(range.to_string());
+        let m2 = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));
+        let (want_s, want_k) = match range {
+            "sub-rayleigh" => (0.5, -0.5),
+            "rayleigh-shear" => (-0.5, -0.5),
+            "transonic" => {
+                let a = (2.0 - d * d / m2).powi(2);
+                let b = 4.0 * (1.0 - d * d).sqrt() * (d * d / m2 - 1.0).sqrt();
+                let t = -(a / b).atan() / std::f64::consts::PI;
+                (t, t)
+            }
+            _ => (0.0, 0.0),
+        };
+        assert!(
+            (sig - want_s).abs() < 1e-9,
+            "nu {nu}, D {d}: {sig} vs {want_s}"
+        );
+        assert!(
+            (kin - want_k).abs() < 1e-9,
+            "nu {nu}, D {d}: {kin} vs {want_k}"
+        );
+    }
+    assert_eq!(seen.len(), 4, "ranges drawn: {seen:?}");
 }

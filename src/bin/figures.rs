@@ -85,6 +85,11 @@ const FIGURES: &[Entry] = &[
         draw: figures::error_vs_time::error_vs_time,
     },
     Entry {
+        name: "edge_exponents",
+        about: "power of the contact pressure at a moving edge against its speed, four Poisson's ratios, both edge laws",
+        draw: figures::edge_exponents::edge_exponents,
+    },
+    Entry {
         name: "impact_strikers",
         about: "rigid, elastic and thin-shell strikers of equal mass and impact speed: h, force, b and the striker's energy against c1 t/R",
         draw: figures::impact_strikers::impact_strikers,
@@ -103,7 +108,7 @@ const FIGURES: &[Entry] = &[
 )]
 struct Cli {
     /// Figures to draw (default: all). Names: fig3 fig4 fig5 fig6 fig7 regime_map
-    /// field_snapshot error_vs_time impact_strikers.
+    /// field_snapshot error_vs_time edge_exponents impact_strikers.
     names: Vec<String>,
     /// Output directory (created if missing).
     #[arg(long, default_value = "figures")]

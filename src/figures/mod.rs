@@ -9,6 +9,7 @@
 //! its progress through [`Ctx::progress`].
 
 pub mod contour;
+pub mod edge_exponents;
 pub mod error_vs_time;
 pub mod field_snapshot;
 pub mod impact_strikers;
