@@ -26,6 +26,9 @@ fn range_color(r: SpeedRange) -> (u8, u8, u8) {
     }
 }
 
+/// The rows of one speed range: (low, high, signorini, kinematic) exponents and the speeds.
+type Segment = (SpeedRange, Vec<[Option<f64>; 4]>, Vec<f64>);
+
 /// edge_exponents: the exponent against the edge speed.
 pub fn edge_exponents(ctx: &Ctx) -> Result<Summary> {
     let n = ctx.points(600, 120);
@@ -83,7 +86,7 @@ pub fn edge_exponents(ctx: &Ctx) -> Result<Summary> {
             });
         }
         // one segment per speed range, so that no line joins across a jump
-        let mut segs: Vec<(SpeedRange, Vec<[Option<f64>; 4]>, Vec<f64>)> = Vec::new();
+        let mut segs: Vec<Segment> = Vec::new();
         for i in 1..=n {
             let d = D_MAX * i as f64 / n as f64;
             if [sr, m, 1.0].iter().any(|c| (d - c).abs() <= 1e-6 * c) {
