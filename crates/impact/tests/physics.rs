@@ -314,3 +314,48 @@ fn bad_input_is_refused_with_the_parameter_named() {
         ));
     }
 }
+
+/// The next term of the supersonic start (`docs/impact.md`, section 6): at the centre of a
+/// parabola, p/(rho c1 dh/dt) = 1 + 2 K3 t/t_s + O((t/t_s)^2), with t_s = 2 R V0/c1^2 (the
+/// supersonic stage ends at t_s/4) and K3 = 4 c2^2/c1^2 - 4 c2^3/c1^3 - 1/2 from the expansion
+/// of the half-plane's symbol in kappa^2/s^2. The slope fitted over 0.02 < t/t_s < 0.2 (with a
+/// quadratic term) tends to 2 K3 under refinement.
+#[test]
+fn supersonic_start_next_term_is_k3() {
+    let slope_error = |nu: f64, dx: f64| -> f64 {
+        let v0 = 0.1;
+        let ts = 2.0 * v0;
+        let mut case = free_parabola(nu, 10.0, v0, ts / 4.0, dx);
+        case.levels = 1;
+        let sol = case.solve(|_| {}).unwrap();
+        let run = &sol.runs[0];
+        let m = m2(nu).sqrt();
+        let k3 = 4.0 * m * m - 4.0 * m * m * m - 0.5;
+        // least squares d = a u + b u^2, u = t/t_s
+        let (mut s11, mut s12, mut s22, mut r1, mut r2) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for (i, st) in run.steps.iter().enumerate() {
+            let prev = if i > 0 { run.steps[i - 1].v } else { v0 };
+            let d = st.pressure[0] * m2(nu) / (0.5 * (st.v + prev)) - 1.0;
+            let u = st.t / ts;
+            if !(0.02..=0.2).contains(&u) {
+                continue;
+            }
+            s11 += u * u;
+            s12 += u * u * u;
+            s22 += u * u * u * u;
+            r1 += u * d;
+            r2 += u * u * d;
+        }
+        let a = (r1 * s22 - r2 * s12) / (s11 * s22 - s12 * s12);
+        a / (2.0 * k3) - 1.0
+    };
+    let coarse = slope_error(0.25, 0.001);
+    let fine = slope_error(0.25, 0.0005);
+    assert!(fine.abs() < 0.1, "slope over 2 K3 - 1: {fine} (dx = R/2000)");
+    assert!(
+        fine.abs() < 0.5 * coarse.abs(),
+        "no convergence: {coarse} then {fine}"
+    );
+    let other = slope_error(0.2, 0.0005);
+    assert!(other.abs() < 0.1, "nu = 0.2: slope over 2 K3 - 1: {other}");
+}
