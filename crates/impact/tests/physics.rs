@@ -351,7 +351,10 @@ fn supersonic_start_next_term_is_k3() {
     };
     let coarse = slope_error(0.25, 0.001);
     let fine = slope_error(0.25, 0.0005);
-    assert!(fine.abs() < 0.1, "slope over 2 K3 - 1: {fine} (dx = R/2000)");
+    assert!(
+        fine.abs() < 0.1,
+        "slope over 2 K3 - 1: {fine} (dx = R/2000)"
+    );
     assert!(
         fine.abs() < 0.5 * coarse.abs(),
         "no convergence: {coarse} then {fine}"
