@@ -152,6 +152,8 @@ fn every_figure_writes_csv_png_svg_with_metadata() {
         "regime_map",
         "field_snapshot",
         "impact_strikers",
+        "impact_history",
+        "impact_pressure",
     ] {
         let csv = Csv::read(&d.join(format!("{name}.csv")));
         assert_eq!(
@@ -728,6 +730,8 @@ fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
         ("error_vs_time", None),
         ("impact_strikers", Some((1600, 1200))),
         ("edge_exponents", Some((1600, 1200))),
+        ("impact_history", Some((1600, 1200))),
+        ("impact_pressure", Some((1600, 700))),
     ] {
         let png = decode_png(&d.join(format!("{name}.png")));
         let svg = svg_size(&d.join(format!("{name}.svg")));
@@ -859,4 +863,73 @@ fn edge_exponents_match_the_library_and_the_closed_forms() {
         );
     }
     assert_eq!(seen.len(), 4, "ranges drawn: {seen:?}");
+}
+
+/// The rigid striker's histories: every row of both laws equals a direct library solve; the
+/// kinematic edge is f^-1(h) = (2 R h)^(1/2); the pressure map's cells integrate to the force
+/// of the history at the same time.
+#[test]
+fn impact_history_and_pressure_match_the_library() {
+    use impact::{Drive, EdgeLaw, ImpactCase, Profile};
+    let d = quick_all();
+    let hist = Csv::read(&d.join("impact_history.csv"));
+    let m2 = (1000.0f64 / 1870.83).powi(2);
+    let nu = (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2));
+    let mut forces = Vec::new();
+    for law in [EdgeLaw::Signorini, EdgeLaw::Kinematic] {
+        let mut case = ImpactCase::new(
+            nu,
+            Profile::Parabola { radius: 1.0 },
+            Drive::Free {
+                mass_ratio: 10.0,
+                v0_over_c1: 0.01,
+            },
+            law,
+            10.0,
+        );
+        case.dx = 0.02;
+        let (lib, _) = case.solve(|_| {}).unwrap().history();
+        let rows: Vec<_> = hist
+            .rows
+            .iter()
+            .filter(|r| text(r, "law") == law.name())
+            .collect();
+        assert_eq!(rows.len(), lib.len(), "{}", law.name());
+        for (r, l) in rows.iter().zip(&lib) {
+            assert_close("t", num(r, "c1t_over_R"), l.t);
+            assert_close("h", num(r, "h_over_R"), l.h.value);
+            assert_close("b", num(r, "b_over_R"), l.b.value);
+            assert_close("force", num(r, "force_over_rho_c1sq_R"), l.force.value);
+            if law == EdgeLaw::Kinematic {
+                let b = (2.0 * l.h.value).sqrt();
+                assert!((num(r, "b_over_R") - b).abs() < 1e-12);
+            }
+        }
+        if law == EdgeLaw::Signorini {
+            forces = lib.iter().map(|l| (l.t, l.force.value)).collect();
+        }
+    }
+    // the pressure map: cell 0 counts once, the others for themselves and their mirror
+    let map = Csv::read(&d.join("impact_pressure.csv"));
+    let mut by_t: std::collections::BTreeMap<i64, f64> = Default::default();
+    for r in &map.rows {
+        let (t, x, p) = (
+            num(r, "c1t_over_R"),
+            num(r, "x_over_R"),
+            num(r, "p_over_rho_c1sq"),
+        );
+        let w = if x == 0.0 { 0.02 } else { 0.04 };
+        *by_t.entry((t * 1e6).round() as i64).or_default() += w * p;
+    }
+    let mut checked = 0;
+    for (t, f) in forces {
+        if let Some(sum) = by_t.get(&((t * 1e6).round() as i64)) {
+            assert!(
+                (sum - f).abs() < 1e-12 * f.abs().max(1e-3),
+                "t = {t}: {sum} vs {f}"
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked > 10, "{checked} times compared");
 }

@@ -85,6 +85,16 @@ const FIGURES: &[Entry] = &[
         draw: figures::error_vs_time::error_vs_time,
     },
     Entry {
+        name: "impact_history",
+        about: "free rigid cylinder (m0/(rho R^2) = 10, V0/c1 = 0.01): h, dh/dt, b and force against c1 t/R, both edge laws, edge speed ranges marked",
+        draw: figures::impact_history::impact_history,
+    },
+    Entry {
+        name: "impact_pressure",
+        about: "free rigid cylinder: pressure over (x, t) with the contact edge, and profiles",
+        draw: figures::impact_history::impact_pressure,
+    },
+    Entry {
         name: "edge_exponents",
         about: "power of the contact pressure at a moving edge against its speed, four Poisson's ratios, both edge laws",
         draw: figures::edge_exponents::edge_exponents,
@@ -108,7 +118,8 @@ const FIGURES: &[Entry] = &[
 )]
 struct Cli {
     /// Figures to draw (default: all). Names: fig3 fig4 fig5 fig6 fig7 regime_map
-    /// field_snapshot error_vs_time edge_exponents impact_strikers.
+    /// field_snapshot error_vs_time impact_history impact_pressure edge_exponents
+    /// impact_strikers.
     names: Vec<String>,
     /// Output directory (created if missing).
     #[arg(long, default_value = "figures")]

@@ -87,7 +87,7 @@ impl Point {
 }
 
 /// Piecewise-linear colour map through evenly spaced `stops`, at `s` in [0, 1].
-fn colormap(stops: &[Rgb], s: f64) -> Rgb {
+pub fn colormap(stops: &[Rgb], s: f64) -> Rgb {
     let s = if s.is_finite() {
         s.clamp(0.0, 1.0)
     } else {
@@ -102,7 +102,7 @@ fn colormap(stops: &[Rgb], s: f64) -> Rgb {
 }
 
 /// Viridis (sampled).
-const VIRIDIS: [Rgb; 9] = [
+pub const VIRIDIS: [Rgb; 9] = [
     (68, 1, 84),
     (71, 44, 122),
     (59, 81, 139),
