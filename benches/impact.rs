@@ -1,0 +1,76 @@
+//! Benchmarks of the impact engine (crate `impact`), f64, one thread: the reference case (free
+//! rigid cylinder, m0/(rho R^2) = 10, V0/c1 = 0.01, c2/c1 = 1000/1870.83, to c1 t/R = 10) on one
+//! grid at dx = R/50 and R/100, and with three grids (the error estimates) at R/100; the same
+//! case with a thin-shell striker of equal mass (h_s/R = 0.05, steel) on one grid at R/100.
+//! The cost against N_t and N_x with fitted exponents: `cargo run --release -p impact
+//! --example cost_scaling`.
+//!
+//! Run: `cargo bench --bench impact`.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use impact::{Drive, EdgeLaw, ImpactCase, Profile, ShellStriker, Striker, StrikerMaterial};
+
+fn reference(dx: f64, levels: usize, mass_ratio: f64) -> ImpactCase {
+    let m: f64 = 1000.0 / 1870.83;
+    let nu = (1.0 - 2.0 * m * m) / (2.0 * (1.0 - m * m));
+    let mut c = ImpactCase::new(
+        nu,
+        Profile::Parabola { radius: 1.0 },
+        Drive::Free {
+            mass_ratio,
+            v0_over_c1: 0.01,
+        },
+        EdgeLaw::Signorini,
+        10.0,
+    );
+    c.dx = dx;
+    c.levels = levels;
+    c
+}
+
+fn bench(c: &mut Criterion) {
+    let mut g = c.benchmark_group("impact");
+    g.sample_size(10);
+    for (dx, levels) in [(0.02, 1), (0.01, 1), (0.01, 3)] {
+        let case = reference(dx, levels, 10.0);
+        g.bench_with_input(
+            BenchmarkId::new(
+                "rigid_reference",
+                format!("R_over_dx={}, levels={levels}", (1.0 / dx).round()),
+            ),
+            &case,
+            |b, case| b.iter(|| black_box(case.solve(|_| {}).unwrap())),
+        );
+    }
+    let shell = ShellStriker {
+        thickness: 0.05,
+        material: StrikerMaterial {
+            c1_ratio: 5900.0 / 1870.83,
+            c2_ratio: 3200.0 / 1870.83,
+            density_ratio: 3.0,
+        },
+    };
+    let case = reference(0.01, 1, shell.mass_ratio()).with_striker(Striker::Shell(shell));
+    g.bench_with_input(
+        BenchmarkId::new("shell_reference", "R_over_dx=100, levels=1"),
+        &case,
+        |b, case| b.iter(|| black_box(case.solve(|_| {}).unwrap())),
+    );
+    let case = reference(0.01, 1, shell.mass_ratio());
+    g.bench_with_input(
+        BenchmarkId::new("rigid_equal_mass", "R_over_dx=100, levels=1"),
+        &case,
+        |b, case| b.iter(|| black_box(case.solve(|_| {}).unwrap())),
+    );
+    g.finish();
+}
+
+criterion_group! {
+    name = benches;
+    // no plots: criterion's plotting backend needs a system font
+    config = Criterion::default().without_plots();
+    targets = bench
+}
+criterion_main!(benches);

@@ -1,0 +1,103 @@
+//! Cost of the march against the number of time steps N_t and contact cells N_x, with the
+//! fitted exponents (least squares on log-log scales), single grid, f64, one thread:
+//!
+//! - a driven flat punch (fixed contact of N_x = a/dx + 1/2 cells) for several end times at
+//!   fixed a (cost against N_t) and several half-widths at a fixed end time (against N_x);
+//! - the reference case (free rigid cylinder, m0/(rho R^2) = 10, V0/c1 = 0.01, to
+//!   c1 t/R = 10) for several dx (N_t and N_x both grow like 1/dx).
+//!
+//! `cargo run --release -p impact --example cost_scaling`
+use std::time::Instant;
+
+use impact::{Drive, EdgeLaw, ImpactCase, Profile};
+
+fn seconds(case: &ImpactCase) -> (f64, usize, usize) {
+    // the fastest of three runs
+    let mut best = f64::INFINITY;
+    let mut sizes = (0, 0);
+    for _ in 0..3 {
+        let t0 = Instant::now();
+        let sol = case.solve(|_| {}).expect("the case solves");
+        best = best.min(t0.elapsed().as_secs_f64());
+        let run = &sol.runs[0];
+        let nx = run
+            .steps
+            .iter()
+            .map(|s| s.pressure.len())
+            .max()
+            .unwrap_or(0);
+        sizes = (run.steps.len(), nx);
+    }
+    (best, sizes.0, sizes.1)
+}
+
+/// Slope of log y against log x.
+fn exponent(pts: &[(f64, f64)]) -> f64 {
+    let n = pts.len() as f64;
+    let (mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0);
+    for (x, y) in pts {
+        let (lx, ly) = (x.ln(), y.ln());
+        sx += lx;
+        sy += ly;
+        sxx += lx * lx;
+        sxy += lx * ly;
+    }
+    (n * sxy - sx * sy) / (n * sxx - sx * sx)
+}
+
+fn punch(a: f64, end: f64) -> ImpactCase {
+    let mut c = ImpactCase::new(
+        0.3,
+        Profile::Flat { half_width: a },
+        Drive::Speed(0.01),
+        EdgeLaw::Signorini,
+        end,
+    );
+    c.dx = 0.01;
+    c.levels = 1;
+    c
+}
+
+fn main() {
+    println!("driven flat punch, dx = R/100, kappa = 2: cost against N_t (a = 0.2 R)");
+    let mut pts = Vec::new();
+    for end in [1.0, 2.0, 4.0, 8.0] {
+        let (s, nt, nx) = seconds(&punch(0.2, end));
+        println!("  N_t = {nt:5}  N_x = {nx:4}  {s:.4} s");
+        pts.push((nt as f64, s));
+    }
+    println!("  fitted exponent of N_t: {:.2}", exponent(&pts));
+    println!("driven flat punch, dx = R/100: cost against N_x (c1 t/R = 2)");
+    let mut pts = Vec::new();
+    for a in [0.1, 0.2, 0.4, 0.8] {
+        let (s, nt, nx) = seconds(&punch(a, 2.0));
+        println!("  N_t = {nt:5}  N_x = {nx:4}  {s:.4} s");
+        pts.push((nx as f64, s));
+    }
+    println!("  fitted exponent of N_x: {:.2}", exponent(&pts));
+    println!("reference case (free rigid cylinder to c1 t/R = 10), one grid: cost against 1/dx");
+    let m: f64 = 1000.0 / 1870.83;
+    let nu = (1.0 - 2.0 * m * m) / (2.0 * (1.0 - m * m));
+    let mut pts = Vec::new();
+    for dx in [0.04, 0.02, 0.01, 0.005] {
+        let mut c = ImpactCase::new(
+            nu,
+            Profile::Parabola { radius: 1.0 },
+            Drive::Free {
+                mass_ratio: 10.0,
+                v0_over_c1: 0.01,
+            },
+            EdgeLaw::Signorini,
+            10.0,
+        );
+        c.dx = dx;
+        c.levels = 1;
+        let (s, nt, nx) = seconds(&c);
+        println!(
+            "  dx = R/{:<4} N_t = {nt:5}  N_x = {nx:4}  {s:.4} s",
+            (1.0 / dx).round()
+        );
+        pts.push((1.0 / dx, s));
+    }
+    println!("  fitted exponent of 1/dx: {:.2}", exponent(&pts));
+}
