@@ -120,7 +120,125 @@ pub const SOLVE_KEYS: &[&str] = &[
     "digits",
 ];
 
-/// The `solve` report of a case: every quantity of [`SOLVE_KEYS`].
+/// The quantities of a report that may be declared unavailable, with the reason, instead of
+/// failing the whole report: the apex expansion, the edge velocities, the apex displacement,
+/// the admissibility flags, and the keys a solution variant does not define. Every other
+/// quantity is required: a report never carries a non-finite or missing number silently.
+pub const OPTIONAL_KEYS: &[&str] = &[
+    "omega0",
+    "s0",
+    "apex_exponent",
+    "apex_amplitude_over_mu_cot_theta",
+    "q_over_c1sq_cot_theta",
+    "edge_slip_velocity_over_speed",
+    "edge_following_rate_over_speed",
+    "apex_u_r_over_speed_t",
+    "slip_direction_ok",
+    "contact_compressive",
+    "no_interpenetration",
+];
+
+/// Declares `key` unavailable with `reason` (the report's `unavailable` object).
+fn unavailable(o: &mut Map<String, Value>, key: &str, reason: impl Into<String>) {
+    o.insert(key.into(), Value::Null);
+    let list = o
+        .entry("unavailable")
+        .or_insert_with(|| Value::Object(Map::new()));
+    if let Value::Object(m) = list {
+        m.insert(key.into(), Value::String(reason.into()));
+    }
+}
+
+/// Inserts an optional quantity, or declares it unavailable with the reason (its error, or a
+/// non-finite value).
+fn optional<T: Real>(o: &mut Map<String, Value>, key: &str, v: Result<T>, digits: usize) {
+    match v {
+        Ok(x) if x.is_finite() => {
+            o.insert(key.into(), real(&x, digits));
+        }
+        Ok(_) => unavailable(o, key, "not finite at this precision"),
+        Err(e) => unavailable(o, key, e.to_string()),
+    }
+}
+
+/// The report's final check: every key of [`SOLVE_KEYS`] holds a finite number (or a string,
+/// a boolean) unless the report declares it unavailable; a missing required quantity is an
+/// error naming it.
+pub fn check_report(o: &Map<String, Value>) -> Result<()> {
+    let declared = o.get("unavailable").and_then(Value::as_object);
+    for k in SOLVE_KEYS {
+        let missing = matches!(o.get(*k), None | Some(Value::Null));
+        let excused = declared.is_some_and(|d| d.contains_key(*k));
+        if missing && !excused {
+            return Err(WedgeError::NoConvergence {
+                what: format!("{k} (not finite at this precision)"),
+                reached: f64::INFINITY,
+                asked: 0.0,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The case's inputs in one line, for error messages.
+pub fn describe(input: &CaseInput, speed: Speed) -> String {
+    let speed = match speed {
+        Speed::Alpha(a) => format!("alpha = {} m/s", short(a)),
+        Speed::Indenter(v) => format!("V = {} m/s", short(v)),
+    };
+    format!(
+        "theta_deg = {}, gamma = {}, coupling {}, {speed}, c1 = {} m/s, c2 = {} m/s, solution {}, {}",
+        input.indenter.theta_deg().text(),
+        input.indenter.gamma().text(),
+        match input.indenter.coupling() {
+            Coupling::On => "on",
+            Coupling::Off => "off",
+        },
+        input.material.c1().text(),
+        input.material.c2().text(),
+        input.solution.name(),
+        match input.digits {
+            None => "f64".to_string(),
+            Some(d) => format!("{d} digits"),
+        }
+    )
+}
+
+/// A number in a few significant digits (for messages).
+fn short(x: f64) -> String {
+    if x != 0.0 && (x.abs() >= 1e6 || x.abs() < 1e-3) {
+        format!("{x:.4e}")
+    } else {
+        format!("{}", (x * 1e6).round() / 1e6)
+    }
+}
+
+/// A numerical failure of the case, with its inputs (parameter errors name their parameter
+/// already and pass unchanged).
+pub fn at_case(input: &CaseInput, speed: Speed, e: WedgeError) -> WedgeError {
+    match e {
+        WedgeError::InvalidParameter { .. } | WedgeError::AtCase { .. } => e,
+        other => {
+            let overflow = matches!(
+                &other,
+                WedgeError::Complex(complexfn::Error::NonFinite { .. })
+            );
+            let inputs = describe(input, speed);
+            WedgeError::AtCase {
+                inputs: if overflow && input.digits.is_none() {
+                    format!("{inputs} (the f64 range is exceeded here; try --digits)")
+                } else {
+                    inputs
+                },
+                error: Box::new(other),
+            }
+        }
+    }
+}
+
+/// The `solve` report of a case: every quantity of [`SOLVE_KEYS`]; the optional ones
+/// ([`OPTIONAL_KEYS`]) that cannot be computed are declared under `unavailable` with the
+/// reason, and the rest of the report stands.
 pub fn solve_report<T: CachedRules>(
     case: &Case<T>,
     digits: usize,
@@ -129,8 +247,6 @@ pub fn solve_report<T: CachedRules>(
     let c1 = case.material().c1().to_real(case.p());
     let cot = case.cot_theta().clone();
     let mt = case.matching()?;
-    let apex = case.apex()?;
-    let apex_ur = case.apex_u_r_over_speed_t()?;
     let mut o = Map::new();
     o.insert(
         "solution".into(),
@@ -144,39 +260,69 @@ pub fn solve_report<T: CachedRules>(
     o.insert("p".into(), real(case.p(), digits));
     o.insert("m".into(), real(case.m(), digits));
     o.insert("m_r".into(), real(case.m_r(), digits));
-    o.insert("omega0".into(), real(&case.omega0(), digits));
-    o.insert("s0".into(), real(&case.s0(), digits));
-    o.insert("regime".into(), Value::String(apex.regime.name().into()));
-    o.insert("apex_exponent".into(), real(&apex.exponent, digits));
-    o.insert(
-        "apex_amplitude_over_mu_cot_theta".into(),
-        real(&apex.amplitude, digits),
+    optional(&mut o, "omega0", Ok(case.omega0()), digits);
+    optional(&mut o, "s0", Ok(case.s0()), digits);
+    o.insert("regime".into(), Value::String(case.regime().name().into()));
+    match case.apex_leading() {
+        Ok((_, exponent, amplitude)) => {
+            optional(&mut o, "apex_exponent", Ok(exponent), digits);
+            optional(
+                &mut o,
+                "apex_amplitude_over_mu_cot_theta",
+                Ok(amplitude),
+                digits,
+            );
+        }
+        Err(e) => {
+            let why = format!("apex expansion: {e}");
+            unavailable(&mut o, "apex_exponent", why.clone());
+            unavailable(&mut o, "apex_amplitude_over_mu_cot_theta", why);
+        }
+    }
+    optional(
+        &mut o,
+        "q_over_c1sq_cot_theta",
+        Ok(mt.q_hat.clone()),
+        digits,
     );
-    o.insert("q_over_c1sq_cot_theta".into(), real(&mt.q_hat, digits));
     o.insert("v_over_c1_cot_theta".into(), real(&mt.v_hat, digits));
     o.insert(
         "force_over_a_mu_cot_theta".into(),
         real(&case.force_hat()?, digits),
     );
-    o.insert(
-        "edge_slip_velocity_over_speed".into(),
-        real(&case.edge_slip_velocity_over_speed()?, digits),
+    optional(
+        &mut o,
+        "edge_slip_velocity_over_speed",
+        case.edge_slip_velocity_over_speed(),
+        digits,
     );
-    o.insert(
-        "edge_following_rate_over_speed".into(),
-        real(&case.edge_following_rate_over_speed()?, digits),
+    optional(
+        &mut o,
+        "edge_following_rate_over_speed",
+        case.edge_following_rate_over_speed(),
+        digits,
     );
-    o.insert("apex_u_r_over_speed_t".into(), real(&apex_ur.value, digits));
+    optional(
+        &mut o,
+        "apex_u_r_over_speed_t",
+        case.apex_u_r_over_speed_t().map(|a| a.value),
+        digits,
+    );
     let err = mt.rel_error;
     if full {
-        add_admissibility(&mut o, case)?;
+        add_admissibility(&mut o, case);
     } else {
-        o.insert("slip_direction_ok".into(), Value::Null);
+        let why = "not computed for curve rows (the sign checks of `solve` sample the contact)";
+        unavailable(&mut o, "slip_direction_ok", why);
         o.insert("contact_compressive".into(), Value::Bool(mt.q_hat > 0.0));
-        o.insert("no_interpenetration".into(), Value::Null);
+        unavailable(&mut o, "no_interpenetration", why);
     }
-    o.insert("error_estimate".into(), f(err));
+    o.insert(
+        "error_estimate".into(),
+        if err.is_finite() { f(err) } else { Value::Null },
+    );
     o.insert("digits".into(), Value::Number(digits.into()));
+    check_report(&o)?;
     Ok(o)
 }
 
@@ -318,6 +464,36 @@ pub fn genuine_report<T: CachedRules>(
         f(g.error_estimate() / g.v_hat().to_f64().abs()),
     );
     o.insert("digits".into(), Value::Number(digits.into()));
+    for k in [
+        "omega0",
+        "s0",
+        "q_over_c1sq_cot_theta",
+        "edge_slip_velocity_over_speed",
+        "edge_following_rate_over_speed",
+        "apex_u_r_over_speed_t",
+    ] {
+        unavailable(
+            &mut o,
+            k,
+            "defined by the paper's construction only (solution paper or as-printed)",
+        );
+    }
+    if !full {
+        for k in [
+            "slip_direction_ok",
+            "contact_compressive",
+            "no_interpenetration",
+        ] {
+            if o.get(k).is_none_or(Value::is_null) {
+                unavailable(
+                    &mut o,
+                    k,
+                    "not computed for curve rows (the sign checks of `solve` sample the contact)",
+                );
+            }
+        }
+    }
+    check_report(&o)?;
     add_inputs(&mut o, input);
     Ok(o)
 }
@@ -365,6 +541,10 @@ fn genuine_solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<Stri
 /// at two precisions (bits(digits) + 32 and + 64) and the error estimate is the larger of the
 /// quadrature estimate and the difference between the two: never optimistic.
 pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
+    solve_unlabelled(input, speed, full).map_err(|e| at_case(input, speed, e))
+}
+
+fn solve_unlabelled(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
     if input.solution == Solution::Genuine {
         return genuine_solve(input, speed, full);
     }
@@ -392,7 +572,7 @@ pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, 
                     Speed::Alpha(case_hi.p().to_f64() * input.material.c1().value()),
                     &0.0_f64,
                 )?;
-                add_admissibility(&mut out, &twin)?;
+                add_admissibility(&mut out, &twin);
             }
             out.insert("error_estimate".into(), f(err));
             add_inputs(&mut out, input);
@@ -401,8 +581,22 @@ pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, 
     }
 }
 
-fn add_admissibility<T: CachedRules>(r: &mut Map<String, Value>, case: &Case<T>) -> Result<()> {
-    let adm = case.admissibility()?;
+/// The admissibility flags, or all three declared unavailable with the reason.
+fn add_admissibility<T: CachedRules>(r: &mut Map<String, Value>, case: &Case<T>) {
+    let adm = match case.admissibility() {
+        Ok(a) => a,
+        Err(e) => {
+            let why = format!("admissibility checks: {e}");
+            for k in [
+                "slip_direction_ok",
+                "contact_compressive",
+                "no_interpenetration",
+            ] {
+                unavailable(r, k, why.clone());
+            }
+            return;
+        }
+    };
     r.insert(
         "slip_direction_ok".into(),
         Value::Bool(adm.slip_direction_ok),
@@ -415,7 +609,6 @@ fn add_admissibility<T: CachedRules>(r: &mut Map<String, Value>, case: &Case<T>)
         "no_interpenetration".into(),
         Value::Bool(adm.no_interpenetration),
     );
-    Ok(())
 }
 
 /// Round every arbitrary-precision number of a report to `digits` significant digits
@@ -473,7 +666,18 @@ pub fn stress_profile<T: CachedRules>(
         }
         let x = case.p().clone() * fp.to_real(case.p());
         let x = if x > *case.p() { case.p().clone() } else { x };
-        let s = case.stress_hat(&x)?;
+        let point = |e: WedgeError| WedgeError::AtCase {
+            inputs: format!("the contact stress at r/(alpha t) = {}", fp.text()),
+            error: Box::new(e),
+        };
+        let s = case.stress_hat(&x).map_err(point)?;
+        if !(s.value.is_finite() && s.error.is_finite()) {
+            return Err(point(WedgeError::NoConvergence {
+                what: "the contact stress (not finite at this precision)".into(),
+                reached: f64::INFINITY,
+                asked: 0.0,
+            }));
+        }
         err = err.max(s.error / s.value.to_f64().abs().max(1e-300));
         out.push(real(&s.value, digits));
     }
@@ -483,6 +687,14 @@ pub fn stress_profile<T: CachedRules>(
 /// Contact stress of the case at fractions r/(alpha t), in any solution variant, with its
 /// largest relative error estimate.
 pub fn stress_values(
+    input: &CaseInput,
+    speed: Speed,
+    at: &[wedge::Param],
+) -> Result<(Vec<Value>, f64)> {
+    stress_unlabelled(input, speed, at).map_err(|e| at_case(input, speed, e))
+}
+
+fn stress_unlabelled(
     input: &CaseInput,
     speed: Speed,
     at: &[wedge::Param],
@@ -530,6 +742,10 @@ fn genuine_stress<T: CachedRules>(
 
 /// One row of an alpha-V curve (the `solve` keys without the admissibility sweep).
 pub fn curve_row(input: &CaseInput, alpha: f64) -> Result<Map<String, Value>> {
+    curve_row_unlabelled(input, alpha).map_err(|e| at_case(input, Speed::Alpha(alpha), e))
+}
+
+fn curve_row_unlabelled(input: &CaseInput, alpha: f64) -> Result<Map<String, Value>> {
     if input.solution == Solution::Genuine {
         return genuine_solve(input, Speed::Alpha(alpha), false);
     }

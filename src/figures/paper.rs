@@ -162,7 +162,7 @@ pub fn fig3(ctx: &Ctx) -> Result<Summary> {
             },
             Column {
                 name: "edge_slip_velocity_over_speed",
-                meaning: "particle velocity (du_r/dt)(r = alpha t)/V (errata section 5)",
+                meaning: "particle velocity (du_r/dt)(r = alpha t)/V (docs/errata.md, section 5)",
             },
             Column {
                 name: "edge_following_rate_over_speed",

@@ -2,7 +2,7 @@
 //!
 //! p_k is analytic in the zeta-plane cut along the segment |Re zeta| < m_k of the real axis
 //! (not the principal branch, whose cuts would run along |Re zeta| > m_k). The branch is fixed
-//! by the sign on the cut (errata, section 1): the paper's eqs (26b), (27b) and (31) need
+//! by the sign on the cut (`docs/errata.md`, section 1): the paper's eqs (26b), (27b) and (31) need
 //!
 //! ```text
 //!   p_k(xi - i0) = +|p_k(xi)|,   p_k(xi + i0) = -|p_k(xi)|        for |xi| < m_k,

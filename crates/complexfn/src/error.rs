@@ -29,6 +29,13 @@ pub enum Error {
         /// Relative tolerance asked for.
         asked: f64,
     },
+    /// A quadrature or series produced a non-finite value or error (an overflow, or an
+    /// integrand not integrable at the precision used): never accepted as a result.
+    #[error("{what} is not finite (an overflow or a singularity the rule cannot integrate)")]
+    NonFinite {
+        /// What was being computed.
+        what: &'static str,
+    },
 }
 
 /// Result alias of this crate.

@@ -627,6 +627,12 @@ where
         value
     };
     let scale = value.magnitude().to_f64();
+    // an infinite scale would pass the tolerance test below: never accept a non-finite result
+    if !(scale.is_finite() && err.is_finite()) {
+        return Err(Error::NonFinite {
+            what: "tanh-sinh quadrature",
+        });
+    }
     if !(err <= opts.rel_tol * scale.max(f64::MIN_POSITIVE) || err <= opts.rel_tol * 1e-300) {
         // report, but let the caller decide: a NaN or non-convergence is an error
         if !err.is_finite() || err > opts.rel_tol.sqrt() * scale.max(f64::MIN_POSITIVE) {
@@ -787,8 +793,14 @@ pub fn gauss_legendre_doubling<V: QuadValue<f64>, F: FnMut(&Point<f64>) -> V>(
     let r2 = gauss_legendre(2 * n)?;
     let i1 = r1.integrate(a, b, &mut f);
     let i2 = r2.integrate(a, b, &mut f);
+    let error = i2.distance(&i1);
+    if !(i2.magnitude().is_finite() && error.is_finite()) {
+        return Err(Error::NonFinite {
+            what: "Gauss-Legendre quadrature",
+        });
+    }
     Ok(Estimate {
-        error: i2.distance(&i1),
+        error,
         value: i2,
         evals: 3 * n,
     })

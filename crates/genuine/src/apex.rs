@@ -1,4 +1,4 @@
-//! The apex: the Mellin eigen-equation and its exponents (errata, section 6b, re-derived).
+//! The apex: the Mellin eigen-equation and its exponents (`docs/errata.md`, section 6b, re-derived).
 //!
 //! Near x = 0 the second-derivative contact condition (see [`crate::solver`]) reads, with
 //! h = dS/dx, H_y = PV Int_0^p h 2v/(v^2 - x^2) dv, H_x = PV Int_0^p h 2v^2/(x (v^2 - x^2)) dv,

@@ -93,7 +93,7 @@ impl<T: Real> QuadValue<T> for JTerms<T> {
 }
 
 /// Rayleigh values at conj(zeta) from those at zeta: p_k(conj z) = -conj p_k(z) (the branch of
-/// errata section 1 is odd and real-symmetric up to sign), K, L, R real-symmetric.
+/// `docs/errata.md`, section 1 is odd and real-symmetric up to sign), K, L, R real-symmetric.
 fn conj_values<T: Real>(rv: &RayleighValues<T>) -> RayleighValues<T> {
     RayleighValues {
         p1: -rv.p1.clone().conj(),

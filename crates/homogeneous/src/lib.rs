@@ -34,7 +34,7 @@
 //! 4. **Eq (12a)**: `W_k = Omega_k(zeta_k) + conj(omega_k(conj zeta_k))` with omega_k given by the
 //!    *same formula* (16) evaluated in the lower half-plane; p_k(v) in U, V is the boundary value
 //!    on the side and quadrant of zeta_k, which in the body (Im zeta_k > 0) is
-//!    p_k(v) = -|p_k(v)| for v < m_k (errata section 1) and, in a head-wave wedge (v > m_k, zeta_k
+//!    p_k(v) = -|p_k(v)| for v < m_k (`docs/errata.md`, section 1) and, in a head-wave wedge (v > m_k, zeta_k
 //!    real), p_k(v) = -i sgn(cos theta) (v^2/m_k^2 - 1)^(-1/2).
 //! 5. **Eq (14b)**: printed with `zeta-bar`; it is zeta_k itself, a real number:
 //!    zeta_k = m_k sec[arcsec(v/m_k) + |theta|] (|theta| <= pi/2) and m_k sec[arcsec(v/m_k) - |theta|]

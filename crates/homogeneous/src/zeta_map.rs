@@ -15,7 +15,7 @@
 //!   field continuous. Functions of zeta_k there take the boundary value from the side the
 //!   continuation comes from: Omega_k from above, omega_k from below.
 //! * **p_k(v) "in the quadrant of zeta_k"** (eq (12)): p_k(v) = -m_k/s_k in both cases, i.e.
-//!   -|p_k(v)| behind the front (upper side of the cut, errata section 1, = `p_same_quadrant`) and
+//!   -|p_k(v)| behind the front (upper side of the cut, `docs/errata.md`, section 1, = `p_same_quadrant`) and
 //!   -i sgn(cos theta) (v^2/m_k^2 - 1)^(-1/2) in a head-wave wedge (the value of p_k(+-v) off the
 //!   cut). This is r times the radial derivative of the Chaplygin variable sech^-1(v/m_k) + i theta,
 //!   which is what makes (10) a gradient (k = 1) or a curl (k = 2).

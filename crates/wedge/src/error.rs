@@ -35,6 +35,14 @@ pub enum WedgeError {
     /// An error of the complex-function layer.
     #[error(transparent)]
     Complex(#[from] complexfn::Error),
+    /// A numerical failure of one case, with the inputs that led to it.
+    #[error("{inputs}: {error}")]
+    AtCase {
+        /// The case's inputs, printed (material, indenter, speed, variant, precision).
+        inputs: String,
+        /// The failure.
+        error: Box<WedgeError>,
+    },
 }
 
 /// Result alias of the wedge crate.

@@ -198,14 +198,14 @@ impl<T: CachedRules> Case<T> {
     }
 
     /// The tangential particle velocity du_r/dt at the contact edge r = alpha t, over V:
-    /// (Q/c1)(I5 + I6)/V (errata, section 5; pole term included for the `paper` variant).
+    /// (Q/c1)(I5 + I6)/V (`docs/errata.md`, section 5; pole term included for the `paper` variant).
     pub fn edge_slip_velocity_over_speed(&self) -> Result<T> {
         let mt = self.matching()?;
         Ok(mt.q_hat.clone() * (mt.i[4].clone() + &mt.i[5]) / &mt.v_hat)
     }
 
     /// The paper's Fig. 3 expression (Q/c1)[(I5 + I6) - (I7 + I8) alpha/c1], over V: this is
-    /// u_r(alpha t, t)/t, the rate of u_r following the moving edge (errata, section 5).
+    /// u_r(alpha t, t)/t, the rate of u_r following the moving edge (`docs/errata.md`, section 5).
     pub fn edge_following_rate_over_speed(&self) -> Result<T> {
         let mt = self.matching()?;
         let i56 = mt.i[4].clone() + &mt.i[5];

@@ -10,7 +10,7 @@
 //! Omega is that of beta + gamma = gamma - cot Theta), and |p_k| = (1 - s/m_k^2)^(-1/2). At
 //! s = 0 this gives (37), Omega0 = (1/pi) atan(m^2 (beta + gamma)/(1 - beta gamma)).
 //!
-//! With omega(u) = Omega(sqrt u) - Omega0 (errata, section 9), eq (38) becomes
+//! With omega(u) = Omega(sqrt u) - Omega0 (`docs/errata.md`, section 9), eq (38) becomes
 //!
 //! ```text
 //!   Lambda0(zeta) = Int_{-p}^{p} sgn(v) (Omega(v) - Omega0)/(v - zeta) dv = Int_0^{p^2} omega(u)/(u - zeta^2) du,

@@ -12,7 +12,7 @@
 //! The boundary gamma = cot Theta is decided deliberately: it holds when |gamma - cot Theta|
 //! <= 8 eps (gamma + cot Theta) at the working precision ([`crate::case::REGIME_BOUNDARY_ULPS`]),
 //! and then beta + gamma is set to exactly zero. (The genuine solution has a different apex
-//! exponent; see the errata, section 6b.)
+//! exponent; see `docs/errata.md`, section 6b.)
 
 use complexfn::quadrature::{tanh_sinh, CachedRules, Point, TsOptions};
 
@@ -78,6 +78,32 @@ impl<T: CachedRules> Case<T> {
     /// (computed once per case, then cached: the finite-regime constant is a quadrature).
     pub fn apex(&self) -> Result<Apex<T>> {
         self.apex.get_or_init(|| self.compute_apex()).clone()
+    }
+
+    /// The leading apex term alone, (regime, exponent, amplitude): in the power and the
+    /// logarithmic regimes in closed form (eq (43), (41)), without the finite-regime constant
+    /// (a quadrature) that [`Case::apex`] also computes; in the finite regime the constant is
+    /// the amplitude.
+    pub fn apex_leading(&self) -> Result<(ApexRegime, T, T)> {
+        let regime = self.regime();
+        if let Some(Ok(a)) = self.apex.get() {
+            return Ok((a.regime, a.exponent.clone(), a.amplitude.clone()));
+        }
+        let q = self.q_hat()?;
+        let p = self.p().clone();
+        match regime {
+            ApexRegime::Logarithmic => Ok((regime, p.zero(), -(q / &p))),
+            ApexRegime::Power => {
+                let o0 = self.omega0();
+                let a = -(q * self.s0().exp() * self.omega_fn().omega0_cos_sin().0)
+                    / (o0.clone() * 2.0 * &p);
+                Ok((regime, o0 * 2.0, a))
+            }
+            ApexRegime::Finite => {
+                let a = self.apex()?;
+                Ok((a.regime, a.exponent, a.amplitude))
+            }
+        }
     }
 
     fn compute_apex(&self) -> Result<Apex<T>> {

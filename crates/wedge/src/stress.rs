@@ -187,8 +187,8 @@ impl<T: CachedRules> Case<T> {
     }
 
     /// u_r(0+, t)/(V t): the tangential displacement at the apex. Non-zero means the
-    /// construction (23) leaves a tangential dislocation 2 u_r(0+) at the apex (errata,
-    /// section 6); it vanishes for gamma = 0.
+    /// construction (23) leaves a tangential dislocation 2 u_r(0+) at the apex
+    /// (`docs/errata.md`, section 6); it vanishes for gamma = 0.
     pub fn apex_u_r_over_speed_t(&self) -> Result<WithError<T>> {
         self.slip_rate_over_speed(&self.p.zero())
     }

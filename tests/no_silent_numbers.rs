@@ -1,0 +1,163 @@
+//! No silent wrong number from `wedge`: a non-finite integral is an error naming the case's
+//! inputs (never a null or a zero with exit code 0), an optional quantity that cannot be
+//! computed is declared unavailable with its reason while the rest of the report stands, and
+//! over random valid inputs no reported field is null unless declared so.
+
+mod common;
+
+use common::{num, run};
+use serde_json::Value;
+
+fn wedge(args: &[&str]) -> (i32, String, String) {
+    run(env!("CARGO_BIN_EXE_wedge"), args)
+}
+
+/// Every key is a finite number, a string or a boolean, or it is null and declared under
+/// `unavailable` with a reason.
+fn assert_declared(v: &Value, what: &str) {
+    let o = v.as_object().expect("a JSON object");
+    let declared = o.get("unavailable").and_then(Value::as_object);
+    for (k, x) in o {
+        match x {
+            Value::Null => {
+                let reason = declared.and_then(|d| d.get(k)).and_then(Value::as_str);
+                assert!(
+                    reason.is_some_and(|r| !r.is_empty()),
+                    "{what}: {k} is null without a reason"
+                );
+            }
+            Value::Number(_) => assert!(num(x).is_finite(), "{what}: {k} = {x}"),
+            _ => {}
+        }
+    }
+}
+
+/// Sharp wedges with strong coupling overflow the f64 path: refused on one line naming the
+/// inputs, not printed as null (or as V = 0).
+#[test]
+fn overflowing_cases_are_refused_with_their_inputs() {
+    for (theta, alpha) in [("1", "98"), ("2", "98"), ("3", "800"), ("6", "10")] {
+        let (code, out, err) = wedge(&["solve", "--theta-deg", theta, "--alpha", alpha, "--json"]);
+        if code == 0 {
+            // computed after all: then every number is finite and declared
+            let v: Value = serde_json::from_str(&out).unwrap();
+            assert_declared(&v, &format!("theta {theta}, alpha {alpha}"));
+            assert!(num(&v["v_over_c1_cot_theta"]) != 0.0);
+            continue;
+        }
+        assert_eq!(code, 2, "theta {theta}: {out}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(
+            err.contains(&format!("theta_deg = {theta}"))
+                && err.contains(&format!("alpha = {alpha} m/s")),
+            "{err}"
+        );
+    }
+    // a stress point at 1e-200 of the half-width: refused, naming the point
+    let (code, _, err) = wedge(&[
+        "stress",
+        "--theta-deg",
+        "86",
+        "--alpha",
+        "500",
+        "--at",
+        "1e-200",
+        "--json",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("r/(alpha t) = 1e-200"), "{err}");
+}
+
+/// Strong friction: the apex amplitude of the power regime is the closed form (43), so the
+/// report stands whole (it used to fail on the finite-regime constant's quadrature).
+#[test]
+fn strong_friction_reports_stand_whole() {
+    for alpha in ["600", "800", "900"] {
+        let (code, out, err) = wedge(&[
+            "solve",
+            "--theta-deg",
+            "86",
+            "--gamma",
+            "2",
+            "--solution",
+            "paper",
+            "--alpha",
+            alpha,
+            "--json",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        let v: Value = serde_json::from_str(&out).unwrap();
+        assert_declared(&v, alpha);
+        assert_eq!(v["regime"], "power");
+        // the exponent of the power regime is 2 Omega0
+        assert!((num(&v["apex_exponent"]) - 2.0 * num(&v["omega0"])).abs() < 1e-14);
+        assert!(num(&v["apex_amplitude_over_mu_cot_theta"]).is_finite());
+    }
+}
+
+/// The genuine solution declares the paper-only keys unavailable, with the reason.
+#[test]
+fn genuine_reports_declare_the_paper_only_keys() {
+    let (code, out, err) = wedge(&[
+        "solve",
+        "--theta-deg",
+        "86",
+        "--gamma",
+        "0.6",
+        "--alpha",
+        "561.249",
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["solution"], "genuine");
+    assert_declared(&v, "genuine");
+    assert!(v["unavailable"]["q_over_c1sq_cot_theta"].is_string());
+}
+
+/// Random valid inputs (angles, friction, coupling, speeds, both variants of the paper's
+/// construction): every output is complete or declares what it lacks; a refusal is one line
+/// with exit code 2, never a null or a panic.
+#[test]
+fn random_inputs_never_print_an_undeclared_null() {
+    // a small linear congruential generator: reproducible without a dependency
+    let mut state: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut solved = 0;
+    for _ in 0..40 {
+        let theta = format!("{:.3}", 30.0 + 59.9 * next());
+        let gamma = format!("{:.3}", 2.0 * next());
+        let alpha = format!("{:.3}", 10.0 + 900.0 * next());
+        let coupling = if next() < 0.5 { "on" } else { "off" };
+        let solution = if next() < 0.5 { "paper" } else { "as-printed" };
+        let args = [
+            "solve",
+            "--theta-deg",
+            &theta,
+            "--gamma",
+            &gamma,
+            "--coupling",
+            coupling,
+            "--alpha",
+            &alpha,
+            "--solution",
+            solution,
+            "--json",
+        ];
+        let (code, out, err) = wedge(&args);
+        if code == 0 {
+            let v: Value = serde_json::from_str(&out).unwrap();
+            assert_declared(&v, &format!("{args:?}"));
+            solved += 1;
+        } else {
+            assert_eq!(code, 2, "{args:?}: {err}");
+            assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        }
+    }
+    assert!(solved >= 30, "only {solved} of 40 solved");
+}
