@@ -161,3 +161,84 @@ fn random_inputs_never_print_an_undeclared_null() {
     }
     assert!(solved >= 30, "only {solved} of 40 solved");
 }
+
+/// Messages and limits: usage errors on one line, negative points parsed and refused by range,
+/// readable numbers and physical names in range errors, a cap on curve grids, rows streamed.
+#[test]
+fn messages_are_one_readable_line_and_grids_are_capped() {
+    for (args, word) in [
+        (
+            vec![
+                "stress",
+                "--theta-deg",
+                "86",
+                "--alpha",
+                "500",
+                "--at",
+                "-0.5",
+            ],
+            "invalid at = -0.5",
+        ),
+        (vec!["solve", "--theta-deg", "86", "--bogus"], "--bogus"),
+        (
+            vec!["solve", "--theta-deg", "86", "--speed", "1e300"],
+            "1.0000e300 m/s",
+        ),
+        (
+            vec![
+                "curve",
+                "--theta-deg",
+                "86.9",
+                "--alpha-range",
+                "10,920,1000000",
+            ],
+            "--force",
+        ),
+        (
+            vec![
+                "solve",
+                "--theta-deg",
+                "86",
+                "--gamma",
+                "0.5",
+                "--speed",
+                "1e6",
+            ],
+            "V/(c1 cot Theta)",
+        ),
+    ] {
+        let (code, out, err) = wedge(&args);
+        assert_eq!(code, 2, "{args:?}: {out}");
+        assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(word), "{args:?}: {err}");
+        assert!(!err.contains("v_hat"), "{args:?}: {err}");
+        // no number printed with more than 20 digits in a row
+        let longest = err
+            .split(|c: char| !c.is_ascii_digit())
+            .map(str::len)
+            .max()
+            .unwrap_or(0);
+        assert!(longest <= 20, "{args:?}: {err}");
+    }
+    // the speed range is the real one, not (0, 0)
+    let (_, _, err) = wedge(&["solve", "--theta-deg", "86", "--speed", "1e300"]);
+    assert!(!err.contains("(0, 0)"), "{err}");
+    // a streamed JSON curve is one valid array, in order
+    let (code, out, err) = wedge(&[
+        "curve",
+        "--theta-deg",
+        "86",
+        "--alpha-range",
+        "10,900,70",
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), 70);
+    let alphas: Vec<f64> = rows.iter().map(|r| num(&r["alpha"])).collect();
+    assert!(alphas.windows(2).all(|w| w[1] > w[0]));
+    for r in rows {
+        assert_declared(r, "curve row");
+    }
+}

@@ -53,7 +53,7 @@ enum Command {
         #[command(flatten)]
         speed: SpeedArgs,
         /// Comma-separated fractions r/(alpha t) in (0, 1].
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         at: String,
         #[command(flatten)]
         out: OutArgs,
@@ -87,8 +87,16 @@ enum Command {
         /// JSON array of objects.
         #[arg(long)]
         json: bool,
+        /// Allow more than 10^4 points.
+        #[arg(long)]
+        force: bool,
     },
 }
+
+/// The largest `curve` grid computed without `--force`.
+const CURVE_CAP: usize = 10_000;
+/// Rows computed in parallel before they are printed (the curve streams in order).
+const CURVE_CHUNK: usize = 32;
 
 #[derive(Args, Debug, Clone)]
 struct CaseArgs {
@@ -346,46 +354,77 @@ fn run(cli: Cli) -> Result<()> {
             digits,
             csv: _,
             json,
+            force,
         } => {
             let inp = input(&case, digits, Defaults::ByFriction)?;
             let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
+            if n > CURVE_CAP && !force {
+                return Err(WedgeError::InvalidParameter {
+                    name: "alpha-range steps",
+                    value: n.to_string(),
+                    range: format!("1 ..= {CURVE_CAP} (or add --force)"),
+                });
+            }
             let alphas = linspace(lo, hi, n);
             let bar = ProgressBar::new(n as u64);
             bar.set_style(
                 ProgressStyle::with_template("{bar:40} {pos}/{len} alpha values")
                     .unwrap_or_else(|_| ProgressStyle::default_bar()),
             );
-            let rows: Vec<Result<Map<String, Value>>> = alphas
-                .par_iter()
-                .map(|&a| {
-                    let r = dyncontact::curve_row(&inp, a);
-                    bar.inc(1);
-                    r
-                })
-                .collect();
-            bar.finish_and_clear();
-            let rows: Vec<Map<String, Value>> = rows.into_iter().collect::<Result<_>>()?;
+            // rows stream out in order, a chunk at a time (computed in parallel)
             let mut lock = stdout.lock();
             if json {
-                let arr = Value::Array(rows.into_iter().map(Value::Object).collect());
-                writeln!(lock, "{arr}").ok();
+                write!(lock, "[").ok();
             } else {
                 for l in header_lines(&inp) {
                     writeln!(lock, "{l}").ok();
                 }
                 writeln!(lock, "{}", SOLVE_KEYS.join(",")).ok();
-                for r in rows {
-                    let cells: Vec<String> = SOLVE_KEYS
-                        .iter()
-                        .map(|k| match r.get(*k) {
-                            Some(Value::String(s)) => s.clone(),
-                            Some(Value::Null) | None => String::new(),
-                            Some(v) => v.to_string(),
-                        })
-                        .collect();
-                    writeln!(lock, "{}", cells.join(",")).ok();
-                }
             }
+            let mut first = true;
+            for chunk in alphas.chunks(CURVE_CHUNK) {
+                let rows: Vec<Result<Map<String, Value>>> = chunk
+                    .par_iter()
+                    .map(|&a| {
+                        let r = dyncontact::curve_row(&inp, a);
+                        bar.inc(1);
+                        r
+                    })
+                    .collect();
+                for r in rows {
+                    let r = match r {
+                        Ok(r) => r,
+                        Err(e) => {
+                            bar.finish_and_clear();
+                            // close what was printed, then fail with the row's error
+                            if json {
+                                writeln!(lock, "]").ok();
+                            }
+                            lock.flush().ok();
+                            return Err(e);
+                        }
+                    };
+                    if json {
+                        write!(lock, "{}{}", if first { "" } else { "," }, Value::Object(r)).ok();
+                    } else {
+                        let cells: Vec<String> = SOLVE_KEYS
+                            .iter()
+                            .map(|k| match r.get(*k) {
+                                Some(Value::String(s)) => s.clone(),
+                                Some(Value::Null) | None => String::new(),
+                                Some(v) => v.to_string(),
+                            })
+                            .collect();
+                        writeln!(lock, "{}", cells.join(",")).ok();
+                    }
+                    first = false;
+                }
+                lock.flush().ok();
+            }
+            if json {
+                writeln!(lock, "]").ok();
+            }
+            bar.finish_and_clear();
         }
     }
     Ok(())
@@ -395,9 +434,16 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {
-            let code = if e.use_stderr() { 2 } else { 0 };
-            let _ = e.print();
-            return ExitCode::from(code);
+            if !e.use_stderr() {
+                // --help, --version
+                let _ = e.print();
+                return ExitCode::SUCCESS;
+            }
+            // one line: clap's first line, without the usage block
+            let text = e.to_string();
+            let first = text.lines().next().unwrap_or("invalid arguments");
+            eprintln!("wedge: {}", first.trim_start_matches("error: "));
+            return ExitCode::from(2);
         }
     };
     match run(cli) {

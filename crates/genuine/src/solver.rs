@@ -947,13 +947,23 @@ impl<T: CachedRules> GenuineCase<T> {
         let (mut fa, _) = f(a.clone())?;
         let (mut fb, _) = f(b.clone())?;
         if fa.is_sign_negative() == fb.is_sign_negative() {
+            // the speeds at the bracket's ends, computed afresh (fa + v_hat cancels for a
+            // target far outside)
+            let v_at = |p: &T| -> Result<f64> {
+                Ok(
+                    GenuineCase::solve(material, indenter, p.clone(), opts.clone())?
+                        .v_hat()
+                        .to_f64(),
+                )
+            };
+            let sig = |x: f64| format!("{x:.4e}");
             return Err(invalid(
-                "v_hat",
-                v_hat.to_f64(),
+                "indenter speed V/(c1 cot Theta)",
+                sig(v_hat.to_f64()),
                 format!(
-                    "between V_hat(p_lo) = {} and V_hat(p_hi) = {}",
-                    (fa + &v_hat).to_f64(),
-                    (fb + &v_hat).to_f64()
+                    "({}, {}), the speeds reached for alpha in (0, c_R)",
+                    sig(v_at(&p_lo)?),
+                    sig(v_at(&p_hi)?)
                 ),
             ));
         }

@@ -80,13 +80,19 @@ pub fn case_for_speed<T: CachedRules>(
     let (flo, fhi) = (g64(&lo)?, g64(&hi)?);
     if !(flo < 0.0 && fhi > 0.0) {
         let c = material.c1().value() * indenter.cot_theta(&0.0_f64);
+        // the speeds at the bracket's ends, computed afresh (flo + target cancels for a
+        // target far outside)
+        let v_at = |p: f64| -> Result<f64> {
+            Ok(Case::new(material, indenter, p, solution)?.v_hat()? * c)
+        };
+        let sig = |x: f64| format!("{x:.4e}");
         return Err(WedgeError::InvalidParameter {
             name: "speed",
-            value: format!("{speed} m/s"),
+            value: format!("{} m/s", sig(speed)),
             range: format!(
                 "({}, {}) m/s, the indenter speeds reached for alpha in (0, c_R)",
-                (flo + target64) * c,
-                (fhi + target64) * c
+                sig(v_at(lo)?),
+                sig(v_at(hi)?)
             ),
         });
     }
