@@ -23,13 +23,14 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// Guard bits added to the precision that holds the requested digits.
 pub const GUARD_BITS: u32 = 32;
 
-/// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s),
+/// as decimal text parsed at the working precision (`f64.into()` for a double).
+#[derive(Clone, Debug, PartialEq)]
 pub enum Speed {
     /// Contact-zone expansion speed alpha, 0 < alpha < c_R.
-    Alpha(f64),
+    Alpha(wedge::Param),
     /// Indenter speed V > 0 (alpha found by the inverse solve).
-    Indenter(f64),
+    Indenter(wedge::Param),
 }
 
 /// Everything that defines one case.
@@ -58,14 +59,22 @@ impl CaseInput {
         self.digits.map(|d| d as usize).unwrap_or(16)
     }
     /// Build the case at the precision of `like`.
-    pub fn case<T: CachedRules>(&self, speed: Speed, like: &T) -> Result<Case<T>> {
+    pub fn case<T: CachedRules>(&self, speed: &Speed, like: &T) -> Result<Case<T>> {
         match speed {
-            Speed::Alpha(a) => {
-                Case::with_alpha(&self.material, &self.indenter, a, like, self.solution)
-            }
-            Speed::Indenter(v) => {
-                wedge::case_for_speed(&self.material, &self.indenter, v, like, self.solution)
-            }
+            Speed::Alpha(a) => Case::with_alpha(
+                &self.material,
+                &self.indenter,
+                a.clone(),
+                like,
+                self.solution,
+            ),
+            Speed::Indenter(v) => wedge::case_for_speed(
+                &self.material,
+                &self.indenter,
+                v.clone(),
+                like,
+                self.solution,
+            ),
         }
     }
 }
@@ -181,10 +190,10 @@ pub fn check_report(o: &Map<String, Value>) -> Result<()> {
 }
 
 /// The case's inputs in one line, for error messages.
-pub fn describe(input: &CaseInput, speed: Speed) -> String {
+pub fn describe(input: &CaseInput, speed: &Speed) -> String {
     let speed = match speed {
-        Speed::Alpha(a) => format!("alpha = {} m/s", short(a)),
-        Speed::Indenter(v) => format!("V = {} m/s", short(v)),
+        Speed::Alpha(a) => format!("alpha = {} m/s", short(a.value())),
+        Speed::Indenter(v) => format!("V = {} m/s", short(v.value())),
     };
     format!(
         "theta_deg = {}, gamma = {}, coupling {}, {speed}, c1 = {} m/s, c2 = {} m/s, solution {}, {}",
@@ -215,7 +224,7 @@ fn short(x: f64) -> String {
 
 /// A numerical failure of the case, with its inputs (parameter errors name their parameter
 /// already and pass unchanged).
-pub fn at_case(input: &CaseInput, speed: Speed, e: WedgeError) -> WedgeError {
+pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
     match e {
         WedgeError::InvalidParameter { .. } | WedgeError::AtCase { .. } => e,
         other => {
@@ -371,7 +380,7 @@ fn solver_err(e: genuine::GenuineError) -> WedgeError {
 /// options for that precision, [`genuine::SolveOptions::for_precision`]).
 pub fn genuine_case<T: CachedRules>(
     input: &CaseInput,
-    speed: Speed,
+    speed: &Speed,
     like: &T,
 ) -> Result<genuine::GenuineCase<T>> {
     let c1 = input.material.c1().value();
@@ -380,27 +389,29 @@ pub fn genuine_case<T: CachedRules>(
         .to_owned();
     let opts = genuine::SolveOptions::for_precision(like.prec());
     match speed {
-        Speed::Alpha(a) => {
+        Speed::Alpha(alpha) => {
+            let a = alpha.value();
             if !(a.is_finite() && a > 0.0 && a < m_r * c1) {
                 return Err(WedgeError::InvalidParameter {
                     name: "alpha",
-                    value: format!("{a} m/s"),
-                    range: format!("(0, c_R) = (0, {}) m/s", m_r * c1),
+                    value: format!("{} m/s", alpha.text()),
+                    range: format!("(0, c_R) = (0, {:.6}) m/s", m_r * c1),
                 });
             }
-            let p = wedge::Param::from_f64(a).to_real(like) / input.material.c1().to_real(like);
+            let p = alpha.to_real(like) / input.material.c1().to_real(like);
             genuine::GenuineCase::solve(&input.material, &input.indenter, p, opts)
                 .map_err(solver_err)
         }
-        Speed::Indenter(v) => {
+        Speed::Indenter(speed) => {
+            let v = speed.value();
             if !(v.is_finite() && v > 0.0) {
                 return Err(WedgeError::InvalidParameter {
                     name: "speed",
-                    value: format!("{v} m/s"),
+                    value: format!("{} m/s", speed.text()),
                     range: "(0, inf) m/s".into(),
                 });
             }
-            let v_hat = wedge::Param::from_f64(v).to_real(like)
+            let v_hat = speed.to_real(like)
                 / (input.material.c1().to_real(like) * input.indenter.cot_theta(like));
             genuine::GenuineCase::for_speed(
                 &input.material,
@@ -521,7 +532,7 @@ fn add_genuine_admissibility<T: CachedRules>(
 
 /// The genuine `solve` report at the requested precision. With `digits`, the admissibility
 /// checks (sign checks over some 50 sample points) are made on the f64 twin of the case.
-fn genuine_solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
+fn genuine_solve(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<String, Value>> {
     match input.precision()? {
         Precision::F64 => genuine_report(input, &genuine_case(input, speed, &0.0_f64)?, full),
         Precision::Bits(b) => {
@@ -529,7 +540,7 @@ fn genuine_solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<Stri
             let mut o = genuine_report(input, &g, false)?;
             if full {
                 let alpha = g.p().to_f64() * input.material.c1().value();
-                let twin = genuine_case(input, Speed::Alpha(alpha), &0.0_f64)?;
+                let twin = genuine_case(input, &Speed::Alpha(alpha.into()), &0.0_f64)?;
                 add_genuine_admissibility(&mut o, &twin)?;
             }
             Ok(o)
@@ -540,11 +551,11 @@ fn genuine_solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<Stri
 /// Solve a case and report it, at the requested precision. With `digits`, the case is solved
 /// at two precisions (bits(digits) + 32 and + 64) and the error estimate is the larger of the
 /// quadrature estimate and the difference between the two: never optimistic.
-pub fn solve(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
+pub fn solve(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<String, Value>> {
     solve_unlabelled(input, speed, full).map_err(|e| at_case(input, speed, e))
 }
 
-fn solve_unlabelled(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<String, Value>> {
+fn solve_unlabelled(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<String, Value>> {
     if input.solution == Solution::Genuine {
         return genuine_solve(input, speed, full);
     }
@@ -569,7 +580,7 @@ fn solve_unlabelled(input: &CaseInput, speed: Speed, full: bool) -> Result<Map<S
             if full {
                 // The admissibility checks are sign checks: done on the f64 twin of the case.
                 let twin = input.case(
-                    Speed::Alpha(case_hi.p().to_f64() * input.material.c1().value()),
+                    &Speed::Alpha((case_hi.p().to_f64() * input.material.c1().value()).into()),
                     &0.0_f64,
                 )?;
                 add_admissibility(&mut out, &twin);
@@ -688,7 +699,7 @@ pub fn stress_profile<T: CachedRules>(
 /// largest relative error estimate.
 pub fn stress_values(
     input: &CaseInput,
-    speed: Speed,
+    speed: &Speed,
     at: &[wedge::Param],
 ) -> Result<(Vec<Value>, f64)> {
     stress_unlabelled(input, speed, at).map_err(|e| at_case(input, speed, e))
@@ -696,7 +707,7 @@ pub fn stress_values(
 
 fn stress_unlabelled(
     input: &CaseInput,
-    speed: Speed,
+    speed: &Speed,
     at: &[wedge::Param],
 ) -> Result<(Vec<Value>, f64)> {
     let digits = input.out_digits();
@@ -741,22 +752,23 @@ fn genuine_stress<T: CachedRules>(
 }
 
 /// One row of an alpha-V curve (the `solve` keys without the admissibility sweep).
-pub fn curve_row(input: &CaseInput, alpha: f64) -> Result<Map<String, Value>> {
-    curve_row_unlabelled(input, alpha).map_err(|e| at_case(input, Speed::Alpha(alpha), e))
+pub fn curve_row(input: &CaseInput, alpha: &wedge::Param) -> Result<Map<String, Value>> {
+    curve_row_unlabelled(input, alpha).map_err(|e| at_case(input, &Speed::Alpha(alpha.clone()), e))
 }
 
-fn curve_row_unlabelled(input: &CaseInput, alpha: f64) -> Result<Map<String, Value>> {
+fn curve_row_unlabelled(input: &CaseInput, alpha: &wedge::Param) -> Result<Map<String, Value>> {
+    let alpha = alpha.clone();
     if input.solution == Solution::Genuine {
-        return genuine_solve(input, Speed::Alpha(alpha), false);
+        return genuine_solve(input, &Speed::Alpha(alpha), false);
     }
     match input.precision()? {
         Precision::F64 => solve_report(
-            &input.case(Speed::Alpha(alpha), &0.0_f64)?,
+            &input.case(&Speed::Alpha(alpha), &0.0_f64)?,
             input.out_digits(),
             false,
         ),
         Precision::Bits(b) => solve_report(
-            &input.case(Speed::Alpha(alpha), &Float::with_val(b, 0))?,
+            &input.case(&Speed::Alpha(alpha), &Float::with_val(b, 0))?,
             input.out_digits(),
             false,
         ),
@@ -860,22 +872,46 @@ pub fn parse_list(name: &'static str, s: &str) -> Result<Vec<f64>> {
 }
 
 /// Parse a range "min,max,steps" (steps >= 2, min < max).
-pub fn parse_range(name: &'static str, s: &str) -> Result<(f64, f64, usize)> {
-    let v = parse_list(name, s)?;
+pub fn parse_range(name: &'static str, s: &str) -> Result<(wedge::Param, wedge::Param, usize)> {
     let bad = || WedgeError::InvalidParameter {
         name,
         value: s.to_string(),
         range: "min,max,steps with min < max and an integer steps >= 2".into(),
     };
-    if v.len() != 3 || !(v[0] < v[1]) || v[2] < 2.0 || v[2].fract() != 0.0 || v[2] > 1e6 {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
         return Err(bad());
     }
-    Ok((v[0], v[1], v[2] as usize))
+    let (lo, hi) = (
+        wedge::Param::parse(name, parts[0])?,
+        wedge::Param::parse(name, parts[1])?,
+    );
+    let n: f64 = parts[2].parse().map_err(|_| bad())?;
+    if !(lo.value() < hi.value()) || n < 2.0 || n.fract() != 0.0 || n > 1e6 {
+        return Err(bad());
+    }
+    Ok((lo, hi, n as usize))
 }
 
-/// Evenly spaced values of a range.
-pub fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+/// `n` evenly spaced values from `lo` to `hi` (decimal texts), spaced at `bits` of precision
+/// (at least 128) and kept as decimal text with the digits of that precision plus ten: each
+/// grid point is parsed at the working precision exactly as the spacing computed it.
+pub fn linspace(lo: &wedge::Param, hi: &wedge::Param, n: usize, bits: u32) -> Vec<wedge::Param> {
+    let bits = bits.max(128) + 32;
+    let like = Float::with_val(bits, 0);
+    let (a, b): (Float, Float) = (lo.to_real(&like), hi.to_real(&like));
+    let digits = (bits as f64 * std::f64::consts::LOG10_2).ceil() as usize + 10;
     (0..n)
-        .map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64)
+        .map(|i| {
+            if i == 0 {
+                return lo.clone();
+            }
+            if i + 1 == n {
+                return hi.clone();
+            }
+            let x = Float::with_val(bits, &b - &a) * (i as u32) / ((n - 1) as u32) + &a;
+            let text = x.to_string_radix(10, Some(digits));
+            wedge::Param::parse("alpha", &text).unwrap_or_else(|_| x.to_f64().into())
+        })
         .collect()
 }

@@ -242,3 +242,77 @@ fn messages_are_one_readable_line_and_grids_are_capped() {
         assert_declared(r, "curve row");
     }
 }
+
+/// Exact decimal inputs: `--alpha`, `--speed` and `--poisson` are kept as decimal text and
+/// parsed at the working precision, and `curve` spaces its grid at that precision (each value
+/// checked here against MPFR at 300 bits).
+#[test]
+fn decimal_inputs_keep_their_digits() {
+    use rug::Float;
+    let prec = 300;
+    let dec = |s: &str| Float::with_val(prec, Float::parse(s).unwrap());
+    let text = |v: &Value| v.to_string();
+    let rel = |a: &Float, b: &Float| Float::with_val(prec, a - b).abs().to_f64() / b.to_f64().abs();
+    // alpha to 28 digits at 40 digits: p = alpha/c1 keeps them
+    let alpha = "561.2490000000000000000000123";
+    let (code, out, err) = wedge(&[
+        "solve",
+        "--theta-deg",
+        "86",
+        "--alpha",
+        alpha,
+        "--digits",
+        "40",
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let want = Float::with_val(prec, dec(alpha) / dec("1870.83"));
+    assert!(rel(&dec(&text(&v["p"])), &want) < 1e-38, "p = {}", v["p"]);
+    // Poisson's ratio as text: m = c2/c1 = ((1 - 2 nu)/(2 (1 - nu)))^(1/2) to 40 digits
+    let (code, out, err) = wedge(&[
+        "solve",
+        "--poisson",
+        "0.2500000000000000000000001",
+        "--theta-deg",
+        "86",
+        "--alpha",
+        "500",
+        "--digits",
+        "40",
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let nu = dec("0.2500000000000000000000001");
+    let one = Float::with_val(prec, 1);
+    let m2 = Float::with_val(prec, &one - Float::with_val(prec, &nu * 2u32))
+        / Float::with_val(prec, Float::with_val(prec, &one - &nu) * 2u32);
+    assert!(
+        rel(&dec(&text(&v["m"])), &m2.sqrt()) < 1e-38,
+        "m = {}",
+        v["m"]
+    );
+    // the curve grid at 30 digits: 10 + 910 i/91 exactly (i = 69 gives 700)
+    let (code, out, err) = wedge(&[
+        "curve",
+        "--theta-deg",
+        "86",
+        "--alpha-range",
+        "10,920,92",
+        "--digits",
+        "30",
+        "--json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    for (i, row) in v.as_array().unwrap().iter().enumerate().step_by(13) {
+        let a = Float::with_val(prec, dec("910") * (i as u32) / 91u32) + dec("10");
+        let p = Float::with_val(prec, &a / dec("1870.83"));
+        assert!(
+            rel(&dec(&text(&row["p"])), &p) < 1e-29,
+            "row {i}: p = {}",
+            row["p"]
+        );
+    }
+}

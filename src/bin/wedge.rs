@@ -111,9 +111,10 @@ struct CaseArgs {
     /// Shear wave speed c2 in m/s (must be below c1 sqrt(3)/2).
     #[arg(long, default_value = "1000", allow_hyphen_values = true)]
     c2: String,
-    /// Poisson's ratio in (-1, 0.5), instead of --c1 (c1 then follows from c2).
+    /// Poisson's ratio in (-1, 0.5), instead of --c1 (c1 then follows from c2), as decimal
+    /// text kept at the working precision.
     #[arg(long, allow_hyphen_values = true)]
-    poisson: Option<f64>,
+    poisson: Option<String>,
     /// Wedge half-angle Theta in degrees, in (0, 90).
     #[arg(long = "theta-deg", allow_hyphen_values = true)]
     theta_deg: String,
@@ -134,12 +135,13 @@ struct CaseArgs {
 #[derive(Args, Debug, Clone)]
 #[group(required = true, multiple = false)]
 struct SpeedArgs {
-    /// Contact-zone expansion speed alpha in m/s, 0 < alpha < c_R.
+    /// Contact-zone expansion speed alpha in m/s, 0 < alpha < c_R (decimal text, kept at the
+    /// working precision).
     #[arg(long, allow_hyphen_values = true)]
-    alpha: Option<f64>,
-    /// Indenter speed V in m/s (alpha is then found by a bracketed root solve).
+    alpha: Option<String>,
+    /// Indenter speed V in m/s (alpha is then found by a bracketed root solve; decimal text).
     #[arg(long, allow_hyphen_values = true)]
-    speed: Option<f64>,
+    speed: Option<String>,
 }
 
 #[derive(Args, Debug, Clone)]
@@ -169,8 +171,8 @@ enum Defaults {
 
 fn input(case: &CaseArgs, digits: Option<u32>, defaults: Defaults) -> Result<CaseInput> {
     let c2 = Param::parse("c2", &case.c2)?;
-    let material = match case.poisson {
-        Some(nu) => Material::from_poisson(nu, c2)?,
+    let material = match &case.poisson {
+        Some(nu) => Material::from_poisson(Param::parse("poisson", nu)?, c2)?,
         None => Material::new(Param::parse("c1", &case.c1)?, c2)?,
     };
     let theta = Param::parse("theta_deg", &case.theta_deg)?;
@@ -215,10 +217,10 @@ fn input(case: &CaseArgs, digits: Option<u32>, defaults: Defaults) -> Result<Cas
     })
 }
 
-fn speed_of(s: &SpeedArgs) -> Speed {
-    match (s.alpha, s.speed) {
-        (Some(a), _) => Speed::Alpha(a),
-        (None, Some(v)) => Speed::Indenter(v),
+fn speed_of(s: &SpeedArgs) -> Result<Speed> {
+    match (&s.alpha, &s.speed) {
+        (Some(a), _) => Ok(Speed::Alpha(Param::parse("alpha", a)?)),
+        (None, Some(v)) => Ok(Speed::Indenter(Param::parse("speed", v)?)),
         (None, None) => unreachable!("clap requires one of --alpha, --speed"),
     }
 }
@@ -269,7 +271,7 @@ fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Solve { case, speed, out } => {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
-            let r = solve(&inp, speed_of(&speed), true)?;
+            let r = solve(&inp, &speed_of(&speed)?, true)?;
             if out.json {
                 println!("{}", Value::Object(r));
             } else {
@@ -285,7 +287,7 @@ fn run(cli: Cli) -> Result<()> {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
             let at = parse_params("at", &at)?;
             let digits = inp.out_digits();
-            let (values, err) = dyncontact::stress_values(&inp, speed_of(&speed), &at)?;
+            let (values, err) = dyncontact::stress_values(&inp, &speed_of(&speed)?, &at)?;
             let mut m = Map::new();
             m.insert("solution".into(), Value::String(inp.solution.name().into()));
             m.insert(
@@ -321,10 +323,10 @@ fn run(cli: Cli) -> Result<()> {
             let digits = inp.out_digits();
             let m = match inp.precision()? {
                 Precision::F64 => {
-                    field_report(&inp.case(speed_of(&speed), &0.0_f64)?, &pts, digits)?
+                    field_report(&inp.case(&speed_of(&speed)?, &0.0_f64)?, &pts, digits)?
                 }
                 Precision::Bits(b) => field_report(
-                    &inp.case(speed_of(&speed), &Float::with_val(b, 0))?,
+                    &inp.case(&speed_of(&speed)?, &Float::with_val(b, 0))?,
                     &pts,
                     digits,
                 )?,
@@ -358,6 +360,7 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let inp = input(&case, digits, Defaults::ByFriction)?;
             let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
+            let bits = inp.precision()?.bits();
             if n > CURVE_CAP && !force {
                 return Err(WedgeError::InvalidParameter {
                     name: "alpha-range steps",
@@ -365,7 +368,7 @@ fn run(cli: Cli) -> Result<()> {
                     range: format!("1 ..= {CURVE_CAP} (or add --force)"),
                 });
             }
-            let alphas = linspace(lo, hi, n);
+            let alphas = linspace(&lo, &hi, n, bits);
             let bar = ProgressBar::new(n as u64);
             bar.set_style(
                 ProgressStyle::with_template("{bar:40} {pos}/{len} alpha values")
@@ -385,7 +388,7 @@ fn run(cli: Cli) -> Result<()> {
             for chunk in alphas.chunks(CURVE_CHUNK) {
                 let rows: Vec<Result<Map<String, Value>>> = chunk
                     .par_iter()
-                    .map(|&a| {
+                    .map(|a| {
                         let r = dyncontact::curve_row(&inp, a);
                         bar.inc(1);
                         r

@@ -111,23 +111,26 @@ impl<T: CachedRules> Case<T> {
         })
     }
 
-    /// The case for a contact-zone speed `alpha` in m/s, at the precision of `like`.
+    /// The case for a contact-zone speed `alpha` in m/s, at the precision of `like` (a
+    /// decimal [`crate::Param`] is parsed at that precision: its digits are kept).
     pub fn with_alpha(
         material: &Material,
         indenter: &Indenter,
-        alpha: f64,
+        alpha: impl Into<crate::params::Param>,
         like: &T,
         solution: Solution,
     ) -> Result<Self> {
+        let alpha = alpha.into();
         let c_r = complexfn::Rayleigh::new(material.m(&0.0_f64))?.m_r() * material.c1().value();
-        if !(alpha.is_finite() && alpha > 0.0 && alpha < c_r) {
+        let av = alpha.value();
+        if !(av.is_finite() && av > 0.0 && av < c_r) {
             return Err(invalid(
                 "alpha",
-                format!("{alpha} m/s"),
-                format!("(0, c_R) = (0, {c_r}) m/s"),
+                format!("{} m/s", alpha.text()),
+                format!("(0, c_R) = (0, {c_r:.6}) m/s"),
             ));
         }
-        let a = crate::params::Param::from_f64(alpha).to_real(like);
+        let a = alpha.to_real(like);
         let p = a / material.c1().to_real(like);
         Case::new(material, indenter, p, solution)
     }

@@ -61,12 +61,14 @@ fn illinois<T: Real, F: FnMut(&T) -> Result<T>>(
 pub fn case_for_speed<T: CachedRules>(
     material: &Material,
     indenter: &Indenter,
-    speed: f64,
+    speed: impl Into<Param>,
     like: &T,
     solution: Solution,
 ) -> Result<Case<T>> {
+    let speed_param: Param = speed.into();
+    let speed = speed_param.value();
     if !(speed.is_finite() && speed > 0.0) {
-        return Err(invalid("speed", speed, "(0, inf) m/s"));
+        return Err(invalid("speed", speed_param.text(), "(0, inf) m/s"));
     }
     // f64 solve
     let m_r = complexfn::Rayleigh::new(material.m(&0.0_f64))?
@@ -109,7 +111,7 @@ pub fn case_for_speed<T: CachedRules>(
     }
     // polish at the working precision
     let c1 = material.c1().to_real(like);
-    let target = Param::from_f64(speed).to_real(like) / (c1 * indenter.cot_theta(like));
+    let target = speed_param.to_real(like) / (c1 * indenter.cot_theta(like));
     let g = |p: &T| -> Result<T> {
         Ok(Case::new(material, indenter, p.clone(), solution)?.v_hat()? - &target)
     };

@@ -52,6 +52,11 @@ impl Param {
     }
 }
 
+/// Digits kept of c1 computed from Poisson's ratio (above the 2000 digits the command line
+/// accepts), and the bits they are computed with.
+const POISSON_DIGITS: usize = 2100;
+const POISSON_BITS: u32 = 7200;
+
 impl From<f64> for Param {
     fn from(x: f64) -> Self {
         Param::from_f64(x)
@@ -86,16 +91,29 @@ impl Material {
 
     /// From Poisson's ratio nu in (-1, 1/2) and the shear speed c2 (m/s):
     /// (c1/c2)^2 = 2 (1 - nu)/(1 - 2 nu).
-    pub fn from_poisson(nu: f64, c2: impl Into<Param>) -> Result<Self> {
-        if !(nu.is_finite() && nu > -1.0 && nu < 0.5) {
-            return Err(invalid("poisson", nu, "(-1, 0.5)"));
+    pub fn from_poisson(nu: impl Into<Param>, c2: impl Into<Param>) -> Result<Self> {
+        let nu: Param = nu.into();
+        let v = nu.value;
+        if !(v.is_finite() && v > -1.0 && v < 0.5) {
+            return Err(invalid("poisson", nu.text(), "(-1, 0.5)"));
         }
         let c2 = c2.into();
         if !(c2.value.is_finite() && c2.value > 0.0) {
             return Err(invalid("c2", c2.text(), "(0, inf) m/s"));
         }
-        let c1 = c2.value * (2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)).sqrt();
-        Material::new(c1, c2)
+        // c1 = c2 (2 (1 - nu)/(1 - 2 nu))^(1/2) from the decimal texts, kept to
+        // POISSON_DIGITS digits (beyond any working precision the library accepts)
+        let like = rug::Float::with_val(POISSON_BITS, 0);
+        let n: rug::Float = nu.to_real(&like);
+        let one = rug::Float::with_val(POISSON_BITS, 1);
+        let ratio = rug::Float::with_val(POISSON_BITS, &one - &n) * 2u32
+            / rug::Float::with_val(
+                POISSON_BITS,
+                &one - rug::Float::with_val(POISSON_BITS, &n * 2u32),
+            );
+        let c1 = c2.to_real(&like) * ratio.sqrt();
+        let text = c1.to_string_radix(10, Some(POISSON_DIGITS));
+        Material::new(Param::parse("c1", &text)?, c2)
     }
 
     /// The reference paper's material: c1 = 1870.83 m/s, c2 = 1000 m/s (c_R = 927.41 m/s).
