@@ -927,6 +927,74 @@ impl<T: CachedRules> GenuineCase<T> {
         Ok((ex, amp))
     }
 
+    /// Above f64: p found in f64 (bracketed search), then polished at the working precision
+    /// by a Newton step with the f64 slope and secant steps, stopping as soon as
+    /// |V(p) - V| is within the solve's own error estimate (or the round-off floor): about
+    /// three solves at the working precision. `None` when the polish leaves the bracket or
+    /// does not settle in eight steps (the caller then searches the whole bracket).
+    fn polish(
+        material: &Material,
+        indenter: &Indenter,
+        v_hat: &T,
+        p_lo: &T,
+        p_hi: &T,
+        opts: &SolveOptions,
+        floor: f64,
+    ) -> Result<Option<Self>> {
+        let opts64 = SolveOptions::for_precision(53);
+        let target = v_hat.to_f64();
+        let g64 = GenuineCase::<f64>::for_speed(
+            material,
+            indenter,
+            target,
+            p_lo.to_f64(),
+            p_hi.to_f64(),
+            opts64.clone(),
+        )?;
+        let p64 = g64.p();
+        let dp = 1e-7 * p64;
+        let slope = (GenuineCase::<f64>::solve(material, indenter, p64 + dp, opts64)?.v_hat()
+            - g64.v_hat())
+            / dp;
+        if !(slope.is_finite() && slope != 0.0) {
+            return Ok(None);
+        }
+        let f = |p: T| -> Result<(T, GenuineCase<T>)> {
+            let c = GenuineCase::solve(material, indenter, p, opts.clone())?;
+            Ok((c.v_hat() - v_hat, c))
+        };
+        let settled = |fx: &T, c: &GenuineCase<T>| {
+            fx.clone().abs().to_f64() <= (floor * target.abs()).max(c.error_estimate())
+        };
+        let (lo, hi) = (p_lo.to_f64(), p_hi.to_f64());
+        let mut x0 = v_hat.lit(p64);
+        let (mut f0, c0) = f(x0.clone())?;
+        if settled(&f0, &c0) {
+            return Ok(Some(c0));
+        }
+        // Newton with the f64 slope, then secant steps
+        let mut x1 = x0.clone() - f0.clone() / slope;
+        for _ in 0..8 {
+            let xf = x1.to_f64();
+            if !(xf > lo && xf < hi) {
+                return Ok(None);
+            }
+            let (f1, c1) = f(x1.clone())?;
+            if settled(&f1, &c1) {
+                return Ok(Some(c1));
+            }
+            let denom = f1.clone() - &f0;
+            if denom.to_f64() == 0.0 {
+                return Ok(None);
+            }
+            let x2 = x1.clone() - f1.clone() * (x1.clone() - &x0) / denom;
+            x0 = x1;
+            f0 = f1;
+            x1 = x2;
+        }
+        Ok(None)
+    }
+
     /// The contact speed p whose genuine V/(c1 cot Theta) equals `v_hat`, searched in
     /// [p_lo, p_hi] (inside (0, m_R)) by secant steps safeguarded by bisection, to
     /// [`roundoff_floor`] of the working precision (the precision of `v_hat`).
@@ -943,6 +1011,11 @@ impl<T: CachedRules> GenuineCase<T> {
             Ok((c.v_hat() - &v_hat, c))
         };
         let floor = roundoff_floor(v_hat.prec());
+        if v_hat.prec() > 53 {
+            if let Some(c) = Self::polish(material, indenter, &v_hat, &p_lo, &p_hi, &opts, floor)? {
+                return Ok(c);
+            }
+        }
         let (mut a, mut b) = (p_lo.clone(), p_hi.clone());
         let (mut fa, _) = f(a.clone())?;
         let (mut fb, _) = f(b.clone())?;

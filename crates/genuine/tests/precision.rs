@@ -262,3 +262,30 @@ fn target_range_corners_agree_with_high_precision() {
     }
     println!("worst relative difference over the corners: {worst:.1e}");
 }
+
+/// The inverse above f64: p for a given V is found in f64 and polished at the working
+/// precision; the result reproduces the target V within the solve's own error estimate, and
+/// its p agrees with the f64 inverse to the f64 solve's accuracy.
+#[test]
+fn inverse_at_96_bits_is_polished_from_f64() {
+    let mat = Material::paper();
+    let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
+    let bits = 96;
+    let opts = SolveOptions::for_precision(bits);
+    let m_r = 0.4957226315464773;
+    // the V of p = 0.3 as the target
+    let target = GenuineCase::solve(&mat, &ind, Float::with_val(bits, 0.3), opts.clone())
+        .unwrap()
+        .v_hat();
+    let lo = Float::with_val(bits, m_r * 1e-6);
+    let hi = Float::with_val(bits, m_r * (1.0 - 1e-6));
+    let g = GenuineCase::for_speed(&mat, &ind, target.clone(), lo, hi, opts).unwrap();
+    let miss = Float::with_val(bits, g.v_hat() - &target).abs().to_f64();
+    assert!(
+        miss <= g.error_estimate().max(1e-27),
+        "V misses by {miss:e}, stated error {:e}",
+        g.error_estimate()
+    );
+    let dp = (g.p().to_f64() - 0.3).abs();
+    assert!(dp < 1e-12, "p = {} (off by {dp:e})", g.p().to_f64());
+}

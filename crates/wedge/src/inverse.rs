@@ -109,9 +109,49 @@ pub fn case_for_speed<T: CachedRules>(
         )
         .or_else(|_| Case::new(material, indenter, like.lit(p64), solution));
     }
-    // polish at the working precision
+    // polish at the working precision: a Newton step with the f64 slope, then secant steps,
+    // stopping as soon as |V(p) - V| is within the matching's own error estimate (about two
+    // or three solves); the bracketed search below is the fallback
     let c1 = material.c1().to_real(like);
     let target = speed_param.to_real(like) / (c1 * indenter.cot_theta(like));
+    let dp = 1e-7 * p64;
+    let slope = (g64(&(p64 + dp))? - g64(&p64)?) / dp;
+    let solve_at = |p: &T| -> Result<(T, Case<T>)> {
+        let c = Case::new(material, indenter, p.clone(), solution)?;
+        let f = c.v_hat()? - &target;
+        Ok((f, c))
+    };
+    let floor = 4.0 * like.epsilon().to_f64() * target.to_f64().abs();
+    let settled =
+        |f: &T, c: &Case<T>| -> Result<bool> {
+            Ok(f.clone().abs().to_f64()
+                <= (c.matching()?.rel_error * target.to_f64().abs()).max(floor))
+        };
+    if slope.is_finite() && slope != 0.0 {
+        let mut x0 = like.lit(p64);
+        let (mut f0, c0) = solve_at(&x0)?;
+        if settled(&f0, &c0)? {
+            return Ok(c0);
+        }
+        let mut x1 = x0.clone() - f0.clone() / slope;
+        for _ in 0..8 {
+            if !(x1 > lo && x1 < hi) {
+                break;
+            }
+            let (f1, c1_case) = solve_at(&x1)?;
+            if settled(&f1, &c1_case)? {
+                return Ok(c1_case);
+            }
+            let denom = f1.clone() - &f0;
+            if denom.to_f64() == 0.0 {
+                break;
+            }
+            let x2 = x1.clone() - f1.clone() * (x1.clone() - &x0) / denom;
+            x0 = x1;
+            f0 = f1;
+            x1 = x2;
+        }
+    }
     let g = |p: &T| -> Result<T> {
         Ok(Case::new(material, indenter, p.clone(), solution)?.v_hat()? - &target)
     };
