@@ -175,6 +175,15 @@ fn optional<T: Real>(o: &mut Map<String, Value>, key: &str, v: Result<T>, digits
 /// error naming it.
 pub fn check_report(o: &Map<String, Value>) -> Result<()> {
     let declared = o.get("unavailable").and_then(Value::as_object);
+    if let Some(k) = declared
+        .into_iter()
+        .flat_map(|d| d.keys())
+        .find(|k| !OPTIONAL_KEYS.contains(&k.as_str()))
+    {
+        return Err(WedgeError::Unsupported(format!(
+            "{k} is a required quantity and cannot be declared unavailable"
+        )));
+    }
     for k in SOLVE_KEYS {
         let missing = matches!(o.get(*k), None | Some(Value::Null));
         let excused = declared.is_some_and(|d| d.contains_key(*k));

@@ -5,11 +5,16 @@
 
 mod common;
 
-use common::{num, run};
+use common::{num, run, run_json};
 use serde_json::Value;
 
 fn wedge(args: &[&str]) -> (i32, String, String) {
     run(env!("CARGO_BIN_EXE_wedge"), args)
+}
+
+/// Run `wedge`, require success, parse its JSON.
+fn json(args: &[&str]) -> Value {
+    run_json(env!("CARGO_BIN_EXE_wedge"), args)
 }
 
 /// Every key is a finite number, a string or a boolean, or it is null and declared under
@@ -73,7 +78,7 @@ fn overflowing_cases_are_refused_with_their_inputs() {
 #[test]
 fn strong_friction_reports_stand_whole() {
     for alpha in ["600", "800", "900"] {
-        let (code, out, err) = wedge(&[
+        let v = json(&[
             "solve",
             "--theta-deg",
             "86",
@@ -85,8 +90,6 @@ fn strong_friction_reports_stand_whole() {
             alpha,
             "--json",
         ]);
-        assert_eq!(code, 0, "{err}");
-        let v: Value = serde_json::from_str(&out).unwrap();
         assert_declared(&v, alpha);
         assert_eq!(v["regime"], "power");
         // the exponent of the power regime is 2 Omega0
@@ -98,7 +101,7 @@ fn strong_friction_reports_stand_whole() {
 /// The genuine solution declares the paper-only keys unavailable, with the reason.
 #[test]
 fn genuine_reports_declare_the_paper_only_keys() {
-    let (code, out, err) = wedge(&[
+    let v = json(&[
         "solve",
         "--theta-deg",
         "86",
@@ -108,8 +111,6 @@ fn genuine_reports_declare_the_paper_only_keys() {
         "561.249",
         "--json",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["solution"], "genuine");
     assert_declared(&v, "genuine");
     assert!(v["unavailable"]["q_over_c1sq_cot_theta"].is_string());
@@ -224,7 +225,7 @@ fn messages_are_one_readable_line_and_grids_are_capped() {
     let (_, _, err) = wedge(&["solve", "--theta-deg", "86", "--speed", "1e300"]);
     assert!(!err.contains("(0, 0)"), "{err}");
     // a streamed JSON curve is one valid array, in order
-    let (code, out, err) = wedge(&[
+    let v = json(&[
         "curve",
         "--theta-deg",
         "86",
@@ -232,8 +233,6 @@ fn messages_are_one_readable_line_and_grids_are_capped() {
         "10,900,70",
         "--json",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(&out).unwrap();
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 70);
     let alphas: Vec<f64> = rows.iter().map(|r| num(&r["alpha"])).collect();
@@ -255,7 +254,7 @@ fn decimal_inputs_keep_their_digits() {
     let rel = |a: &Float, b: &Float| Float::with_val(prec, a - b).abs().to_f64() / b.to_f64().abs();
     // alpha to 28 digits at 40 digits: p = alpha/c1 keeps them
     let alpha = "561.2490000000000000000000123";
-    let (code, out, err) = wedge(&[
+    let v = json(&[
         "solve",
         "--theta-deg",
         "86",
@@ -265,12 +264,10 @@ fn decimal_inputs_keep_their_digits() {
         "40",
         "--json",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(&out).unwrap();
     let want = Float::with_val(prec, dec(alpha) / dec("1870.83"));
     assert!(rel(&dec(&text(&v["p"])), &want) < 1e-38, "p = {}", v["p"]);
     // Poisson's ratio as text: m = c2/c1 = ((1 - 2 nu)/(2 (1 - nu)))^(1/2) to 40 digits
-    let (code, out, err) = wedge(&[
+    let v = json(&[
         "solve",
         "--poisson",
         "0.2500000000000000000000001",
@@ -282,8 +279,6 @@ fn decimal_inputs_keep_their_digits() {
         "40",
         "--json",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(&out).unwrap();
     let nu = dec("0.2500000000000000000000001");
     let one = Float::with_val(prec, 1);
     let m2 = Float::with_val(prec, &one - Float::with_val(prec, &nu * 2u32))
@@ -294,7 +289,7 @@ fn decimal_inputs_keep_their_digits() {
         v["m"]
     );
     // the curve grid at 30 digits: 10 + 910 i/91 exactly (i = 69 gives 700)
-    let (code, out, err) = wedge(&[
+    let v = json(&[
         "curve",
         "--theta-deg",
         "86",
@@ -304,8 +299,6 @@ fn decimal_inputs_keep_their_digits() {
         "30",
         "--json",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: Value = serde_json::from_str(&out).unwrap();
     for (i, row) in v.as_array().unwrap().iter().enumerate().step_by(13) {
         let a = Float::with_val(prec, dec("910") * (i as u32) / 91u32) + dec("10");
         let p = Float::with_val(prec, &a / dec("1870.83"));
