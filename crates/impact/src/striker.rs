@@ -279,6 +279,13 @@ impl Ring {
         (mass, k)
     }
 
+    /// The harmonics 0..=N kept for cells of width `dx`: N = 16/dx (each cell resolved 16
+    /// times over), at least 64. The coefficient tables and the energy recursion use the same.
+    pub fn harmonics(&self, dx: f64) -> Result<Vec<Harmonic>> {
+        let nmax = ((16.0 / dx).ceil() as usize).max(64);
+        (0..=nmax).map(|n| self.harmonic(n)).collect()
+    }
+
     /// The modes of harmonic n (radial components only).
     pub fn harmonic(&self, n: usize) -> Result<Harmonic> {
         if n == 0 {
@@ -388,6 +395,8 @@ fn sinc(x: f64) -> f64 {
 /// the coefficient of a pressure held over one step is [S(k, t_{l+1}) - S(k, t_l)]/dx.
 pub(crate) struct ShellTable {
     harmonics: Vec<Harmonic>,
+    /// The frequencies of every mode, in the harmonics' order.
+    omegas: Vec<f64>,
     dx: f64,
     dt: f64,
     /// cos(n k dx) sinc^2(n dx/2), [n][k], grown with k.
@@ -402,19 +411,21 @@ pub(crate) struct ShellTable {
 
 impl ShellTable {
     fn new(ring: Ring, dx: f64, dt: f64) -> Result<Self> {
-        // harmonics up to N = 16/dx (cells resolved 16 times over), at least 64
-        let nmax = ((16.0 / dx).ceil() as usize).max(64);
-        let harmonics: Vec<Harmonic> = (0..=nmax)
-            .map(|n| ring.harmonic(n))
-            .collect::<Result<_>>()?;
+        let harmonics = ring.harmonics(dx)?;
+        let nmax = harmonics.len() - 1;
         // tail bound: beyond N each term is at most sinc^2 * 2 * sum phi^2/omega^2, with
         // sinc^2 <= (2/(n dx))^2 and the static compliance falling like n^-2
         let last = &harmonics[nmax];
         let comp: f64 = last.modes.iter().map(|(w, p)| p / (w * w)).sum();
         let c = comp * (nmax * nmax) as f64;
         let tail = 2.0 * 4.0 * c / (3.0 * (nmax as f64).powi(3) * dx * dx);
+        let omegas = harmonics
+            .iter()
+            .flat_map(|h| h.modes.iter().map(|m| m.0))
+            .collect();
         Ok(ShellTable {
             harmonics,
+            omegas,
             dx,
             dt,
             space: Vec::new(),
@@ -477,11 +488,7 @@ impl ShellTable {
                 }
             }
         }
-        let omegas: Vec<f64> = self
-            .harmonics
-            .iter()
-            .flat_map(|h| h.modes.iter().map(|m| m.0))
-            .collect();
+        let omegas = &self.omegas;
         // new columns of the existing rows: the cosines by rotation, reset every 64 steps
         let old_rows = self.s.len();
         if have_k < width && old_rows > 0 {
@@ -493,7 +500,7 @@ impl ShellTable {
             for l in 0..old_rows {
                 if l % 64 == 0 {
                     let t = l as f64 * self.dt;
-                    for (zi, w) in z.iter_mut().zip(&omegas) {
+                    for (zi, w) in z.iter_mut().zip(omegas) {
                         *zi = ((w * t).cos(), (w * t).sin());
                     }
                 } else {
@@ -553,10 +560,7 @@ pub fn shell_energies(
     dt: f64,
     pressures: &[Vec<f64>],
 ) -> Result<Vec<(f64, f64)>> {
-    let nmax = ((16.0 / dx).ceil() as usize).max(64);
-    let harmonics: Vec<Harmonic> = (0..=nmax)
-        .map(|n| ring.harmonic(n))
-        .collect::<Result<_>>()?;
+    let harmonics = ring.harmonics(dx)?;
     // modal coordinates (q, qdot) per harmonic and mode
     let mut state: Vec<Vec<(f64, f64)>> = harmonics
         .iter()

@@ -89,21 +89,23 @@ impl<T: CachedRules> Case<T> {
         if let Some(Ok(a)) = self.apex.get() {
             return Ok((a.regime, a.exponent.clone(), a.amplitude.clone()));
         }
-        let q = self.q_hat()?;
         let p = self.p().clone();
         match regime {
-            ApexRegime::Logarithmic => Ok((regime, p.zero(), -(q / &p))),
-            ApexRegime::Power => {
-                let o0 = self.omega0();
-                let a = -(q * self.s0().exp() * self.omega_fn().omega0_cos_sin().0)
-                    / (o0.clone() * 2.0 * &p);
-                Ok((regime, o0 * 2.0, a))
-            }
+            ApexRegime::Logarithmic => Ok((regime, p.zero(), -(self.q_hat()? / &p))),
+            ApexRegime::Power => Ok((regime, self.omega0() * 2.0, self.power_coefficient()?)),
             ApexRegime::Finite => {
                 let a = self.apex()?;
                 Ok((a.regime, a.exponent, a.amplitude))
             }
         }
+    }
+
+    /// A = -Q e^(S0) cos(pi Omega0)/(2 Omega0 p), eq (43): the coefficient of the power term
+    /// (p/x)^(2 Omega0) of the apex expansion.
+    fn power_coefficient(&self) -> Result<T> {
+        let q = self.q_hat()?;
+        Ok(-(q * self.s0().exp() * self.omega_fn().omega0_cos_sin().0)
+            / (self.omega0() * 2.0 * self.p()))
     }
 
     fn compute_apex(&self) -> Result<Apex<T>> {
@@ -121,9 +123,7 @@ impl<T: CachedRules> Case<T> {
                 coefficient: c,
             });
         }
-        // A = -Q e^(S0) cos(pi Omega0)/(2 Omega0 p), eq (43)
-        let a =
-            -(q * self.s0().exp() * self.omega_fn().omega0_cos_sin().0) / (o0.clone() * 2.0 * &p);
+        let a = self.power_coefficient()?;
         let c = self.apex_constant()?;
         let (exponent, amplitude) = match regime {
             ApexRegime::Power => (o0 * 2.0, a.clone()),
