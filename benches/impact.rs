@@ -10,21 +10,14 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use impact::{Drive, EdgeLaw, ImpactCase, Profile, ShellStriker, Striker, StrikerMaterial};
+use impact::{Drive, EdgeLaw, ImpactCase, ShellStriker, Striker, StrikerMaterial};
 
 fn reference(dx: f64, levels: usize, mass_ratio: f64) -> ImpactCase {
-    let m: f64 = 1000.0 / 1870.83;
-    let nu = (1.0 - 2.0 * m * m) / (2.0 * (1.0 - m * m));
-    let mut c = ImpactCase::new(
-        nu,
-        Profile::Parabola { radius: 1.0 },
-        Drive::Free {
-            mass_ratio,
-            v0_over_c1: 0.01,
-        },
-        EdgeLaw::Signorini,
-        10.0,
-    );
+    let mut c = ImpactCase::reference(EdgeLaw::Signorini);
+    c.drive = Drive::Free {
+        mass_ratio,
+        v0_over_c1: 0.01,
+    };
     c.dx = dx;
     c.levels = levels;
     c

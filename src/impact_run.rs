@@ -212,7 +212,7 @@ pub fn material(c1: Option<f64>, c2: Option<f64>, nu: Option<f64>) -> R<f64> {
                     c2 / c1
                 ));
             }
-            Ok((1.0 - 2.0 * m2) / (2.0 * (1.0 - m2)))
+            Ok(lamb::poisson_of(&m2))
         }
         (None, None, None) => {
             Err("missing material: give --poisson NU, or --c1 and --c2 (m/s)".into())

@@ -201,8 +201,8 @@ pub fn check_report(o: &Map<String, Value>) -> Result<()> {
 /// The case's inputs in one line, for error messages.
 pub fn describe(input: &CaseInput, speed: &Speed) -> String {
     let speed = match speed {
-        Speed::Alpha(a) => format!("alpha = {} m/s", short(a.value())),
-        Speed::Indenter(v) => format!("V = {} m/s", short(v.value())),
+        Speed::Alpha(a) => format!("alpha = {} m/s", lamb::error::short(a.value())),
+        Speed::Indenter(v) => format!("V = {} m/s", lamb::error::short(v.value())),
     };
     format!(
         "theta_deg = {}, gamma = {}, coupling {}, {speed}, c1 = {} m/s, c2 = {} m/s, solution {}, {}",
@@ -220,15 +220,6 @@ pub fn describe(input: &CaseInput, speed: &Speed) -> String {
             Some(d) => format!("{d} digits"),
         }
     )
-}
-
-/// A number in a few significant digits (for messages).
-fn short(x: f64) -> String {
-    if x != 0.0 && (x.abs() >= 1e6 || x.abs() < 1e-3) {
-        format!("{x:.4e}")
-    } else {
-        format!("{}", (x * 1e6).round() / 1e6)
-    }
 }
 
 /// A numerical failure of the case, with its inputs (parameter errors name their parameter
@@ -856,28 +847,6 @@ pub fn field_report<T: CachedRules>(
 /// Parse "a,b,c" into decimal parameters (kept as text for arbitrary precision).
 pub fn parse_params(name: &'static str, s: &str) -> Result<Vec<wedge::Param>> {
     s.split(',').map(|t| wedge::Param::parse(name, t)).collect()
-}
-
-/// Parse "a,b,c" into numbers; `name` goes into the error.
-pub fn parse_list(name: &'static str, s: &str) -> Result<Vec<f64>> {
-    s.split(',')
-        .map(|t| {
-            let v: f64 = t.trim().parse().map_err(|_| WedgeError::InvalidParameter {
-                name,
-                value: s.to_string(),
-                range: "comma-separated finite numbers".into(),
-            })?;
-            if v.is_finite() {
-                Ok(v)
-            } else {
-                Err(WedgeError::InvalidParameter {
-                    name,
-                    value: s.to_string(),
-                    range: "comma-separated finite numbers".into(),
-                })
-            }
-        })
-        .collect()
 }
 
 /// Parse a range "min,max,steps" (steps >= 2, min < max).

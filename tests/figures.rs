@@ -870,23 +870,12 @@ fn edge_exponents_match_the_library_and_the_closed_forms() {
 /// of the history at the same time.
 #[test]
 fn impact_history_and_pressure_match_the_library() {
-    use impact::{Drive, EdgeLaw, ImpactCase, Profile};
+    use impact::{EdgeLaw, ImpactCase};
     let d = quick_all();
     let hist = Csv::read(&d.join("impact_history.csv"));
-    let m2 = (1000.0f64 / 1870.83).powi(2);
-    let nu = (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2));
     let mut forces = Vec::new();
     for law in [EdgeLaw::Signorini, EdgeLaw::Kinematic] {
-        let mut case = ImpactCase::new(
-            nu,
-            Profile::Parabola { radius: 1.0 },
-            Drive::Free {
-                mass_ratio: 10.0,
-                v0_over_c1: 0.01,
-            },
-            law,
-            10.0,
-        );
+        let mut case = ImpactCase::reference(law);
         case.dx = 0.02;
         let (lib, _) = case.solve(|_| {}).unwrap().history();
         let rows: Vec<_> = hist

@@ -8,7 +8,7 @@
 
 use std::path::PathBuf;
 
-use impact::{Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, Solution};
+use impact::{EdgeLaw, HistoryRow, ImpactCase, Solution};
 
 use super::field_snapshot::{colormap, VIRIDIS};
 use super::output::{Cell as CsvCell, Column, Table};
@@ -23,18 +23,7 @@ const END: f64 = 10.0;
 
 /// The reference case with `law` on the grid of the figure's mode.
 fn solve(ctx: &Ctx, law: EdgeLaw) -> Result<Solution> {
-    let m2 = (C2 / C1).powi(2);
-    let nu = (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2));
-    let mut case = ImpactCase::new(
-        nu,
-        Profile::Parabola { radius: 1.0 },
-        Drive::Free {
-            mass_ratio: MASS_RATIO,
-            v0_over_c1: V0,
-        },
-        law,
-        END,
-    );
+    let mut case = ImpactCase::reference(law);
     case.dx = if ctx.quick { 0.02 } else { 0.005 };
     case.levels = 3;
     case.solve(|_| {})

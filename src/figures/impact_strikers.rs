@@ -24,39 +24,33 @@ const STEEL: (f64, f64, f64) = (5900.0, 3200.0, 3.0);
 const THICKNESS: f64 = 0.05;
 const V0: f64 = 0.01;
 
-fn strikers() -> Vec<(&'static str, Striker)> {
-    let material = StrikerMaterial {
+/// The thin steel shell; its mass m0/(rho R^2) is the one all three strikers share.
+fn shell() -> ShellStriker {
+    ShellStriker {
+        thickness: THICKNESS,
+        material: steel(),
+    }
+}
+
+fn steel() -> StrikerMaterial {
+    StrikerMaterial {
         c1_ratio: STEEL.0 / C1,
         c2_ratio: STEEL.1 / C1,
         density_ratio: STEEL.2,
-    };
+    }
+}
+
+fn strikers() -> Vec<(&'static str, Striker)> {
     vec![
         ("rigid", Striker::Rigid),
-        ("elastic", Striker::Elastic(material)),
-        (
-            "shell",
-            Striker::Shell(ShellStriker {
-                thickness: THICKNESS,
-                material,
-            }),
-        ),
+        ("elastic", Striker::Elastic(steel())),
+        ("shell", Striker::Shell(shell())),
     ]
 }
 
 fn solve(striker: Striker, end: f64, dx: f64) -> Result<Vec<HistoryRow>> {
-    let nu = {
-        let m2 = (C2 / C1).powi(2);
-        (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2))
-    };
-    let mass_ratio = ShellStriker {
-        thickness: THICKNESS,
-        material: StrikerMaterial {
-            c1_ratio: 1.0,
-            c2_ratio: 0.5,
-            density_ratio: STEEL.2,
-        },
-    }
-    .mass_ratio();
+    let nu = lamb::poisson_of(&(C2 / C1).powi(2));
+    let mass_ratio = shell().mass_ratio();
     let end = end.min(striker.validity_end());
     let mut case = ImpactCase::new(
         nu,
@@ -109,7 +103,7 @@ pub fn impact_strikers(ctx: &Ctx) -> Result<Summary> {
         "half-plane c1 = {C1} m/s, c2 = {C2} m/s; strikers c1s = {} m/s, c2s = {} m/s, rho_s/rho = {}; shell h_s/R = {THICKNESS}; equal mass m0/(rho R^2) = 2 pi h_s/R rho_s/rho; V0/c1 = {V0}; parabola of radius R; signorini edge; dx/R = {dx}, kappa = 2, two grids",
         STEEL.0, STEEL.1, STEEL.2
     ));
-    let mass = 2.0 * std::f64::consts::PI * THICKNESS * STEEL.2;
+    let mass = shell().mass_ratio();
     let ke0 = 0.5 * mass * V0 * V0;
     let err = |v: &impact::Value| v.err.map(Cell::Num).unwrap_or(Cell::Empty);
     for (name, rows) in &runs {

@@ -3,8 +3,9 @@
 //! Everything here is independent of the wedge problem: the precision layer ([`scalar`],
 //! [`cx`]), the radicals p_k with the cuts of the reference paper ([`branch`]), the Rayleigh
 //! family K, L, R and the Rayleigh root ([`rayleigh`]), Plemelj boundary values and the
-//! operator D ([`plemelj`]), Cauchy integrals and principal values ([`cauchy`]) and the
-//! quadrature rules they rest on ([`quadrature`]).
+//! operator D ([`plemelj`]), Cauchy integrals and principal values ([`cauchy`]), the
+//! quadrature rules they rest on ([`quadrature`]) and the scalar root finders of the inverse
+//! solves ([`roots`]).
 //!
 //! Reference: "Dynamic indentation of an elastic half-plane by a rigid wedge: frictional and
 //! tangential-displacement effects", eqs (12)-(21). Every function is generic over
@@ -20,6 +21,7 @@ pub mod error;
 pub mod plemelj;
 pub mod quadrature;
 pub mod rayleigh;
+pub mod roots;
 pub mod scalar;
 
 pub use branch::{p_boundary, p_k, Side};

@@ -956,9 +956,6 @@ impl<T: CachedRules> GenuineCase<T> {
         let slope = (GenuineCase::<f64>::solve(material, indenter, p64 + dp, opts64)?.v_hat()
             - g64.v_hat())
             / dp;
-        if !(slope.is_finite() && slope != 0.0) {
-            return Ok(None);
-        }
         let f = |p: T| -> Result<(T, GenuineCase<T>)> {
             let c = GenuineCase::solve(material, indenter, p, opts.clone())?;
             Ok((c.v_hat() - v_hat, c))
@@ -966,33 +963,14 @@ impl<T: CachedRules> GenuineCase<T> {
         let settled = |fx: &T, c: &GenuineCase<T>| {
             fx.clone().abs().to_f64() <= (floor * target.abs()).max(c.error_estimate())
         };
-        let (lo, hi) = (p_lo.to_f64(), p_hi.to_f64());
-        let mut x0 = v_hat.lit(p64);
-        let (mut f0, c0) = f(x0.clone())?;
-        if settled(&f0, &c0) {
-            return Ok(Some(c0));
-        }
-        // Newton with the f64 slope, then secant steps
-        let mut x1 = x0.clone() - f0.clone() / slope;
-        for _ in 0..8 {
-            let xf = x1.to_f64();
-            if !(xf > lo && xf < hi) {
-                return Ok(None);
-            }
-            let (f1, c1) = f(x1.clone())?;
-            if settled(&f1, &c1) {
-                return Ok(Some(c1));
-            }
-            let denom = f1.clone() - &f0;
-            if denom.to_f64() == 0.0 {
-                return Ok(None);
-            }
-            let x2 = x1.clone() - f1.clone() * (x1.clone() - &x0) / denom;
-            x0 = x1;
-            f0 = f1;
-            x1 = x2;
-        }
-        Ok(None)
+        complexfn::roots::secant_polish(
+            v_hat.lit(p64),
+            slope,
+            (p_lo.to_f64(), p_hi.to_f64()),
+            8,
+            |x: &T| f(x.clone()),
+            |fx, c| Ok(settled(fx, c)),
+        )
     }
 
     /// The contact speed p whose genuine V/(c1 cot Theta) equals `v_hat`, searched in

@@ -76,20 +76,9 @@ fn main() {
     }
     println!("  fitted exponent of N_x: {:.2}", exponent(&pts));
     println!("reference case (free rigid cylinder to c1 t/R = 10), one grid: cost against 1/dx");
-    let m: f64 = 1000.0 / 1870.83;
-    let nu = (1.0 - 2.0 * m * m) / (2.0 * (1.0 - m * m));
     let mut pts = Vec::new();
     for dx in [0.04, 0.02, 0.01, 0.005] {
-        let mut c = ImpactCase::new(
-            nu,
-            Profile::Parabola { radius: 1.0 },
-            Drive::Free {
-                mass_ratio: 10.0,
-                v0_over_c1: 0.01,
-            },
-            EdgeLaw::Signorini,
-            10.0,
-        );
+        let mut c = ImpactCase::reference(EdgeLaw::Signorini);
         c.dx = dx;
         c.levels = 1;
         let (s, nt, nx) = seconds(&c);

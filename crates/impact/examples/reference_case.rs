@@ -1,7 +1,7 @@
 //! The reference case of the benchmark (free rigid cylinder, parabolic profile,
 //! m0/(rho R^2) = 10, V0/c1 = 0.01, c2/c1 = 1000/1870.83, to c1 t/R = 10): prints the history
 //! at a few times with error estimates. `cargo run --release -p impact --example reference_case -- DX KAPPA`.
-use impact::{Drive, EdgeLaw, ImpactCase, Profile};
+use impact::{EdgeLaw, ImpactCase};
 
 fn main() {
     let args: Vec<f64> = std::env::args()
@@ -13,18 +13,8 @@ fn main() {
         args.get(1).copied().unwrap_or(4.0),
         args.get(2).copied().unwrap_or(10.0),
     );
-    let m: f64 = 1000.0 / 1870.83;
-    let nu = (1.0 - 2.0 * m * m) / (2.0 * (1.0 - m * m));
-    let mut case = ImpactCase::new(
-        nu,
-        Profile::Parabola { radius: 1.0 },
-        Drive::Free {
-            mass_ratio: 10.0,
-            v0_over_c1: 0.01,
-        },
-        EdgeLaw::Signorini,
-        end,
-    );
+    let mut case = ImpactCase::reference(EdgeLaw::Signorini);
+    case.end = end;
     case.dx = dx;
     case.kappa = kappa;
     let t0 = std::time::Instant::now();

@@ -74,6 +74,22 @@ impl ImpactCase {
         }
     }
 
+    /// The benchmark's reference case: a free rigid cylinder with the parabolic profile
+    /// x^2/(2R), m0/(rho R^2) = 10, V0/c1 = 0.01, on the half-plane c2/c1 = 1000/1870.83
+    /// (the wedge paper's material), to c1 t/R = 10, under `law`, with the default grid.
+    pub fn reference(law: EdgeLaw) -> Self {
+        ImpactCase::new(
+            lamb::poisson_of(&(1000.0f64 / 1870.83).powi(2)),
+            Profile::Parabola { radius: 1.0 },
+            Drive::Free {
+                mass_ratio: 10.0,
+                v0_over_c1: 0.01,
+            },
+            law,
+            10.0,
+        )
+    }
+
     /// The case with another striker model.
     pub fn with_striker(mut self, striker: Striker) -> Self {
         self.striker = striker;

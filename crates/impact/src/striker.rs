@@ -60,8 +60,7 @@ impl StrikerMaterial {
 
     /// The striker's Poisson's ratio.
     pub fn poisson(&self) -> f64 {
-        let m2 = (self.c2_ratio / self.c1_ratio).powi(2);
-        (1.0 - 2.0 * m2) / (2.0 * (1.0 - m2))
+        lamb::poisson_of(&(self.c2_ratio / self.c1_ratio).powi(2))
     }
 
     /// The striker's shear modulus over the half-plane's: (rho_s/rho) (c2s/c2)^2, with

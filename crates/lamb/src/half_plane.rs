@@ -410,8 +410,8 @@ impl<T: Real> HalfPlane<T> {
     }
 }
 
-/// nu = (1 - 2 m^2)/(2 (1 - m^2)).
-pub(crate) fn poisson_of<T: Real>(m2: &T) -> T {
+/// Poisson's ratio from m^2 = (c2/c1)^2: nu = (1 - 2 m^2)/(2 (1 - m^2)).
+pub fn poisson_of<T: Real>(m2: &T) -> T {
     let one = m2.one();
     (one.clone() - m2.clone() * 2.0) / ((one - m2) * 2.0)
 }

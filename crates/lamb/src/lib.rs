@@ -30,5 +30,5 @@ pub mod rational;
 pub mod transform;
 
 pub use error::{LambError, Result};
-pub use half_plane::{Estimate, HalfPlane, RayleighConstants, Region, Triple};
+pub use half_plane::{poisson_of, Estimate, HalfPlane, RayleighConstants, Region, Triple};
 pub use transform::Lamb;

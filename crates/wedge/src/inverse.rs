@@ -7,7 +7,7 @@
 //! narrow bracket around the f64 root.
 
 use complexfn::quadrature::CachedRules;
-use complexfn::Real;
+use complexfn::roots::{illinois, secant_polish};
 
 use crate::case::Case;
 use crate::error::{invalid, Result, WedgeError};
@@ -15,47 +15,6 @@ use crate::params::{Indenter, Material, Param, Solution};
 
 /// Smallest and largest p = alpha/c1 used to bracket the inverse solve, as fractions of m_R.
 pub const BRACKET: (f64, f64) = (1e-6, 1.0 - 1e-6);
-
-fn illinois<T: Real, F: FnMut(&T) -> Result<T>>(
-    mut lo: T,
-    mut flo: T,
-    mut hi: T,
-    mut fhi: T,
-    tol: &T,
-    mut f: F,
-) -> Result<T> {
-    let mut side = 0i32;
-    for _ in 0..200 {
-        let width = hi.clone() - &lo;
-        if width <= tol.clone() * (lo.clone().abs() + hi.clone().abs()) {
-            break;
-        }
-        let mut x = (lo.clone() * &fhi - hi.clone() * &flo) / (fhi.clone() - &flo);
-        if !(x > lo && x < hi) {
-            x = (lo.clone() + &hi) / 2.0;
-        }
-        let fx = f(&x)?;
-        if fx == 0.0 {
-            return Ok(x);
-        }
-        if (fx < 0.0) == (flo < 0.0) {
-            lo = x;
-            flo = fx;
-            if side == -1 {
-                fhi /= 2.0;
-            }
-            side = -1;
-        } else {
-            hi = x;
-            fhi = fx;
-            if side == 1 {
-                flo /= 2.0;
-            }
-            side = 1;
-        }
-    }
-    Ok((lo.clone() * &fhi - hi * &flo) / (fhi - flo))
-}
 
 /// The case whose indenter speed is `speed` (m/s), at the precision of `like`.
 pub fn case_for_speed<T: CachedRules>(
@@ -127,30 +86,15 @@ pub fn case_for_speed<T: CachedRules>(
             Ok(f.clone().abs().to_f64()
                 <= (c.matching()?.rel_error * target.to_f64().abs()).max(floor))
         };
-    if slope.is_finite() && slope != 0.0 {
-        let mut x0 = like.lit(p64);
-        let (mut f0, c0) = solve_at(&x0)?;
-        if settled(&f0, &c0)? {
-            return Ok(c0);
-        }
-        let mut x1 = x0.clone() - f0.clone() / slope;
-        for _ in 0..8 {
-            if !(x1 > lo && x1 < hi) {
-                break;
-            }
-            let (f1, c1_case) = solve_at(&x1)?;
-            if settled(&f1, &c1_case)? {
-                return Ok(c1_case);
-            }
-            let denom = f1.clone() - &f0;
-            if denom.to_f64() == 0.0 {
-                break;
-            }
-            let x2 = x1.clone() - f1.clone() * (x1.clone() - &x0) / denom;
-            x0 = x1;
-            f0 = f1;
-            x1 = x2;
-        }
+    if let Some(case) = secant_polish(
+        like.lit(p64),
+        slope,
+        (lo, hi),
+        8,
+        |x: &T| solve_at(x),
+        |f, c| settled(f, c),
+    )? {
+        return Ok(case);
     }
     let g = |p: &T| -> Result<T> {
         Ok(Case::new(material, indenter, p.clone(), solution)?.v_hat()? - &target)
