@@ -147,6 +147,69 @@ pub const OPTIONAL_KEYS: &[&str] = &[
     "no_interpenetration",
 ];
 
+/// The numeric quantities of a report that carry their own error estimate, under
+/// `error_estimates` (absolute, in the quantity's own units, never optimistic: checked against
+/// solves at twice the precision over a grid of cases in `tests/error_estimates.rs`). In a CSV
+/// they are the columns `err_<key>`, after the [`SOLVE_KEYS`].
+pub const ESTIMATED_KEYS: &[&str] = &[
+    "alpha",
+    "speed",
+    "p",
+    "m",
+    "m_r",
+    "omega0",
+    "s0",
+    "apex_exponent",
+    "apex_amplitude_over_mu_cot_theta",
+    "q_over_c1sq_cot_theta",
+    "v_over_c1_cot_theta",
+    "force_over_a_mu_cot_theta",
+    "edge_slip_velocity_over_speed",
+    "edge_following_rate_over_speed",
+    "apex_u_r_over_speed_t",
+];
+
+/// The relative error floor of a value printed to `digits` significant digits and computed
+/// at `bits` bits: half a unit in the last printed digit, or 8 units of round-off.
+fn print_floor(digits: usize, bits: u32) -> f64 {
+    (0.5 * 10f64.powi(1 - digits as i32)).max(8.0 * 2f64.powi(-(bits as i32)))
+}
+
+/// The magnitude of a report's numeric entry (0 when absent or not a number).
+fn magnitude(o: &Map<String, Value>, key: &str) -> Option<f64> {
+    o.get(key).and_then(Value::as_f64).map(f64::abs)
+}
+
+/// Fills `error_estimates` for every [`ESTIMATED_KEYS`] entry the report holds: the
+/// quantity's own absolute estimate where `own` has one, otherwise `rel` |value| (the solve's
+/// relative estimate); never below the print floor `floor` |value|.
+fn add_estimates(o: &mut Map<String, Value>, rel: f64, floor: f64, own: &[(&str, f64)]) {
+    let mut e = Map::new();
+    for k in ESTIMATED_KEYS {
+        let Some(v) = magnitude(o, k) else { continue };
+        let est = match own.iter().find(|(name, _)| name == k) {
+            Some((_, a)) => *a,
+            None => rel * v,
+        };
+        e.insert((*k).into(), f(est.max(floor * v)));
+    }
+    o.insert("error_estimates".into(), Value::Object(e));
+}
+
+/// Sets the estimate of `key` to `value` (when the report holds the key).
+fn set_estimate(o: &mut Map<String, Value>, key: &str, value: f64) {
+    if let Some(Value::Object(e)) = o.get_mut("error_estimates") {
+        if e.contains_key(key) {
+            e.insert(key.into(), f(value));
+        }
+    }
+}
+
+/// The estimate of `key` (absolute), if the report has one.
+pub fn estimate(o: &Map<String, Value>, key: &str) -> Option<f64> {
+    o.get("error_estimates")?.get(key)?.as_f64()
+}
+
 /// Declares `key` unavailable with `reason` (the report's `unavailable` object).
 fn unavailable(o: &mut Map<String, Value>, key: &str, reason: impl Into<String>) {
     o.insert(key.into(), Value::Null);
@@ -318,6 +381,15 @@ pub fn solve_report<T: CachedRules>(
         digits,
     );
     let err = mt.rel_error;
+    let floor = print_floor(digits, case.p().prec());
+    // alpha is given (decimal text), p = alpha/c1, m and m_r are the material's: round-off
+    // only; the apex displacement carries its own (absolute) quadrature estimate
+    let mut own = vec![("alpha", 0.0), ("p", 0.0), ("m", 0.0), ("m_r", 0.0)];
+    if let Ok(a) = case.apex_u_r_over_speed_t() {
+        let scale = a.value.to_f64().abs();
+        own.push(("apex_u_r_over_speed_t", a.error.max(err * scale)));
+    }
+    add_estimates(&mut o, err, floor, &own);
     if full {
         add_admissibility(&mut o, case);
     } else {
@@ -470,11 +542,34 @@ pub fn genuine_report<T: CachedRules>(
     if full {
         add_genuine_admissibility(&mut o, g)?;
     }
-    o.insert(
-        "error_estimate".into(),
-        f(g.error_estimate() / g.v_hat().to_f64().abs()),
-    );
+    let v_abs = g.error_estimate();
+    let rel = v_abs / g.v_hat().to_f64().abs();
+    o.insert("error_estimate".into(), f(rel));
     o.insert("digits".into(), Value::Number(digits.into()));
+    let floor = print_floor(digits, g.precision_bits());
+    let mut own = vec![
+        ("alpha", 0.0),
+        ("p", 0.0),
+        ("m", 0.0),
+        ("m_r", 0.0),
+        ("apex_exponent", 0.0),
+        ("v_over_c1_cot_theta", v_abs),
+        ("force_over_a_mu_cot_theta", g.force_error_estimate()),
+    ];
+    match g.apex_amplitude_error_estimate() {
+        Ok(e) if e.is_finite() => own.push(("apex_amplitude_over_mu_cot_theta", e)),
+        Ok(_) => unavailable(
+            &mut o,
+            "apex_amplitude_over_mu_cot_theta",
+            "its error estimate is not finite",
+        ),
+        Err(e) => unavailable(
+            &mut o,
+            "apex_amplitude_over_mu_cot_theta",
+            format!("its error estimate: {e}"),
+        ),
+    }
+    add_estimates(&mut o, rel, floor, &own);
     for k in [
         "omega0",
         "s0",
@@ -551,8 +646,59 @@ fn genuine_solve(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<Str
 /// Solve a case and report it, at the requested precision. With `digits`, the case is solved
 /// at two precisions (bits(digits) + 32 and + 64) and the error estimate is the larger of the
 /// quadrature estimate and the difference between the two: never optimistic.
+///
+/// Every quantity of [`ESTIMATED_KEYS`] carries its own absolute estimate under
+/// `error_estimates`. When the indenter speed is given, alpha and p inherit the error of V
+/// through the slope of the alpha-V relation: delta p/p = |d ln p/d ln V| delta V/V (the
+/// slope measured in f64).
 pub fn solve(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<String, Value>> {
-    solve_unlabelled(input, speed, full).map_err(|e| at_case(input, speed, e))
+    let mut o = solve_unlabelled(input, speed, full).map_err(|e| at_case(input, speed, e))?;
+    if let Speed::Indenter(_) = speed {
+        inverse_estimates(input, &mut o).map_err(|e| at_case(input, speed, e))?;
+    }
+    Ok(o)
+}
+
+/// With V given, alpha is found by the inverse solve, which stops once |V(alpha) - V| is
+/// within V's own estimate: alpha is uncertain by delta alpha = 2 delta V/(dV/d alpha), and
+/// every quantity Q(alpha) by |dQ/d alpha| delta alpha more. The slopes are central
+/// differences of two f64 rows at alpha (1 +- 1e-5) (they are needed to a few percent; a
+/// margin of 10 percent is added).
+fn inverse_estimates(input: &CaseInput, o: &mut Map<String, Value>) -> Result<()> {
+    let alpha = magnitude(o, "alpha").unwrap_or(0.0);
+    let h = 1e-5;
+    let f64_input = CaseInput {
+        digits: None,
+        ..input.clone()
+    };
+    let row = |a: f64| curve_row_unlabelled(&f64_input, &a.into());
+    let (lo, hi) = (row(alpha * (1.0 - h))?, row(alpha * (1.0 + h))?);
+    let slope = |k: &str| -> Option<f64> {
+        let (a, b) = (lo.get(k)?.as_f64()?, hi.get(k)?.as_f64()?);
+        Some((b - a) / (2.0 * h * alpha))
+    };
+    let dv = slope("v_over_c1_cot_theta").unwrap_or(0.0).abs();
+    let v_err = estimate(o, "v_over_c1_cot_theta").unwrap_or(f64::INFINITY);
+    if !(dv.is_finite() && dv > 0.0) {
+        return Err(WedgeError::NoConvergence {
+            what: "slope of the alpha-V relation".into(),
+            reached: dv,
+            asked: 0.0,
+        });
+    }
+    let d_alpha = 2.0 * v_err / dv;
+    let c1 = input.material.c1().value();
+    for k in ESTIMATED_KEYS {
+        let Some(own) = estimate(o, k) else { continue };
+        let add = match *k {
+            "alpha" => d_alpha,
+            "p" => d_alpha / c1,
+            "m" | "m_r" | "speed" | "v_over_c1_cot_theta" => 0.0,
+            _ => slope(k).map(f64::abs).unwrap_or(0.0) * d_alpha,
+        };
+        set_estimate(o, k, own + 1.1 * add);
+    }
+    Ok(())
 }
 
 fn solve_unlabelled(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<String, Value>> {
@@ -576,7 +722,9 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<
             let r_hi = solve_report(&case_hi, digits + 10, false)?;
             let diff = report_difference(&r_lo, &r_hi, CHECKED_KEYS);
             let err = diff.max(case_hi.matching()?.rel_error);
+            let estimates = merged_estimates(&r_lo, &r_hi, print_floor(digits, bits));
             let mut out = round_report(r_hi, digits);
+            out.insert("error_estimates".into(), estimates);
             if full {
                 // The admissibility checks are sign checks: done on the f64 twin of the case.
                 let twin = input.case(
@@ -590,6 +738,27 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, full: bool) -> Result<Map<
             Ok(out)
         }
     }
+}
+
+/// The estimates of a report solved at two precisions (`hi` reported): for each quantity the
+/// larger of `hi`'s own estimate and the difference between the two, not below the print
+/// floor `floor` |value| of the digits finally printed.
+fn merged_estimates(lo: &Map<String, Value>, hi: &Map<String, Value>, floor: f64) -> Value {
+    let mut e = Map::new();
+    for k in ESTIMATED_KEYS {
+        let (Some(own), Some(v)) = (estimate(hi, k), hi.get(*k)) else {
+            continue;
+        };
+        let scale = v.as_f64().map(f64::abs).unwrap_or(0.0);
+        // report_difference is relative to |hi|; for a zero value take the absolute one
+        let diff = if scale > 0.0 {
+            report_difference(lo, hi, &[k]) * scale
+        } else {
+            lo.get(*k).and_then(Value::as_f64).unwrap_or(0.0).abs()
+        };
+        e.insert((*k).into(), f(own.max(diff).max(floor * scale)));
+    }
+    Value::Object(e)
 }
 
 /// The admissibility flags, or all three declared unavailable with the reason.

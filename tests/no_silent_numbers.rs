@@ -116,6 +116,39 @@ fn genuine_reports_declare_the_paper_only_keys() {
     assert!(v["unavailable"]["q_over_c1sq_cot_theta"].is_string());
 }
 
+/// At gamma = 0 the genuine solution and the paper's construction coincide, and so does the
+/// finite apex stress S(0+), which the stress approaches only like x^(2 Omega0) with Omega0
+/// near 0: the genuine limit is integrated with the apex behaviour subtracted, not sampled at
+/// a small x (where it was -15.6 against the limit -72.2). Both carry their own estimates.
+#[test]
+fn genuine_finite_apex_limit_is_the_papers() {
+    let run = |sol: &str| {
+        json(&[
+            "solve",
+            "--theta-deg",
+            "86",
+            "--gamma",
+            "0",
+            "--alpha",
+            "561.249",
+            "--solution",
+            sol,
+            "--json",
+        ])
+    };
+    let (g, p) = (run("genuine"), run("paper"));
+    assert_eq!(g["regime"], "finite");
+    let key = "apex_amplitude_over_mu_cot_theta";
+    let (a, b) = (num(&g[key]), num(&p[key]));
+    assert!((a + 72.19).abs() < 0.01, "{a}");
+    let (ea, eb) = (
+        num(&g["error_estimates"][key]),
+        num(&p["error_estimates"][key]),
+    );
+    assert!(ea > 0.0 && eb > 0.0 && ea < 1e-6 && eb < 1e-6, "{ea} {eb}");
+    assert!((a - b).abs() <= ea + eb, "{a} {b} {ea} {eb}");
+}
+
 /// Random valid inputs (angles, friction, coupling, speeds, both variants of the paper's
 /// construction): every output is complete or declares what it lacks; a refusal is one line
 /// with exit code 2, never a null or a panic.

@@ -12,7 +12,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use complexfn::Precision;
 use dyncontact::{
     field_report, linspace, num, parse_params, parse_points, parse_range, solve, CaseInput, Speed,
-    FIELD_KEYS, SOLVE_KEYS, VERSION,
+    ESTIMATED_KEYS, FIELD_KEYS, SOLVE_KEYS, VERSION,
 };
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
@@ -382,7 +382,13 @@ fn run(cli: Cli) -> Result<()> {
                 for l in header_lines(&inp) {
                     writeln!(lock, "{l}").ok();
                 }
-                writeln!(lock, "{}", SOLVE_KEYS.join(",")).ok();
+                let errs = ESTIMATED_KEYS.iter().map(|k| format!("err_{k}"));
+                let header: Vec<String> = SOLVE_KEYS
+                    .iter()
+                    .map(|k| k.to_string())
+                    .chain(errs)
+                    .collect();
+                writeln!(lock, "{}", header.join(",")).ok();
             }
             let mut first = true;
             for chunk in alphas.chunks(CURVE_CHUNK) {
@@ -410,9 +416,12 @@ fn run(cli: Cli) -> Result<()> {
                     if json {
                         write!(lock, "{}{}", if first { "" } else { "," }, Value::Object(r)).ok();
                     } else {
+                        let est = r.get("error_estimates");
                         let cells: Vec<String> = SOLVE_KEYS
                             .iter()
-                            .map(|k| match r.get(*k) {
+                            .map(|k| r.get(*k))
+                            .chain(ESTIMATED_KEYS.iter().map(|k| est.and_then(|e| e.get(*k))))
+                            .map(|v| match v {
                                 Some(Value::String(s)) => s.clone(),
                                 Some(Value::Null) | None => String::new(),
                                 Some(v) => v.to_string(),

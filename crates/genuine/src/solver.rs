@@ -185,9 +185,10 @@ struct Fit<T> {
 pub struct GenuineCase<T = f64> {
     prob: Problem<T>,
     fit: Fit<T>,
-    coarse_v_hat: T,
-    /// V_hat at degree 3N/4 (above f64 only).
-    middle_v_hat: Option<T>,
+    /// The solve at degree N/2.
+    coarse: Fit<T>,
+    /// The solve at degree 3N/4.
+    middle: Option<Fit<T>>,
     opts: SolveOptions,
 }
 
@@ -596,12 +597,9 @@ impl<T: CachedRules> GenuineCase<T> {
         }
         let prob = Problem::new(material, indenter, p)?;
         let basis = prob.basis(opts.degree, &opts);
-        // the coarser sizes of the error estimate: N/2, and above f64 also 3N/4 (see
-        // [`GenuineCase::error_estimate`])
-        let mut sizes = vec![opts.degree / 2];
-        if prob.prec > 64 {
-            sizes.push(3 * opts.degree / 4 / 2 * 2);
-        }
+        // the coarser sizes of the error estimates: N/2 and 3N/4 (see
+        // [`GenuineCase::error_estimate`] and [`GenuineCase::apex_amplitude_error_estimate`])
+        let sizes = [opts.degree / 2, 3 * opts.degree / 4 / 2 * 2];
         let rows = prob.row_samples(&basis, opts.h_quad);
         let xs = prob.p.clone() * NORMALISATION_POINT;
         let cont = prob.contour_samples(&basis, &xs, opts.h_tanh);
@@ -609,11 +607,11 @@ impl<T: CachedRules> GenuineCase<T> {
         let mut fits = Vec::with_capacity(sizes.len());
         for &n in &sizes {
             let b = prob.basis(n, &opts);
-            let (c, _) = prob.fit(&b, &rows, &opts)?;
-            fits.push((b, c));
+            let (c, r) = prob.fit(&b, &rows, &opts)?;
+            fits.push((b, c, r));
         }
         let mut hws = vec![prob.weighted_slopes(&basis, &cont, &coef)];
-        for (b, c) in &fits {
+        for (b, c, _) in &fits {
             hws.push(prob.weighted_slopes(b, &cont, c));
         }
         let loads: Vec<&[T]> = hws.iter().map(|h| h.as_slice()).collect();
@@ -625,12 +623,18 @@ impl<T: CachedRules> GenuineCase<T> {
         let mut u = u.into_iter();
         let v_hat = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
         let mut coarser = Vec::with_capacity(fits.len());
-        for (_, mut c) in fits {
-            coarser.push(prob.normalise(&mut c, u.next().ok_or_else(no_value)?, &xs)?);
+        for (basis, mut coef, residual) in fits {
+            let v_hat = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
+            coarser.push(Fit {
+                basis,
+                coef,
+                v_hat,
+                residual,
+            });
         }
         let mut coarser = coarser.into_iter();
-        let coarse_v_hat = coarser.next().ok_or_else(no_value)?;
-        let middle_v_hat = coarser.next();
+        let coarse = coarser.next().ok_or_else(no_value)?;
+        let middle = coarser.next();
         Ok(GenuineCase {
             prob,
             fit: Fit {
@@ -639,8 +643,8 @@ impl<T: CachedRules> GenuineCase<T> {
                 v_hat,
                 residual,
             },
-            coarse_v_hat,
-            middle_v_hat,
+            coarse,
+            middle,
             opts,
         })
     }
@@ -690,7 +694,7 @@ impl<T: CachedRules> GenuineCase<T> {
     /// V/(c1 cot Theta) of the coarse solve (half the degree), from which the error estimate
     /// is taken.
     pub fn coarse_v_hat(&self) -> T {
-        self.coarse_v_hat.clone()
+        self.coarse.v_hat.clone()
     }
 
     /// The (absolute) error estimate of V_hat, plus [`roundoff_floor`] |V_hat| of the working
@@ -703,28 +707,101 @@ impl<T: CachedRules> GenuineCase<T> {
     /// through N/2 and 3N/4), taken with a factor 100 of margin, and only when the sizes
     /// converge (d4 <= d2/4); otherwise d2.
     pub fn error_estimate(&self) -> f64 {
-        let d2 = (self.fit.v_hat.clone() - &self.coarse_v_hat).abs().to_f64();
-        let floor = roundoff_floor(self.prob.prec) * self.fit.v_hat.to_f64().abs();
-        let d = match &self.middle_v_hat {
+        self.estimate_of(true, |f| Ok(f.v_hat.clone()))
+            .unwrap_or(f64::INFINITY)
+    }
+
+    /// The absolute error estimate of a quantity computed from one solve, by the rule of
+    /// [`Self::error_estimate`] applied to its values at degrees N, N/2 (and 3N/4 above f64),
+    /// plus the round-off floor times its magnitude. Without `extrapolate` the estimate above
+    /// f64 is d4 = |q(N) - q(3N/4)| itself (it bounds the 3N/4 solve), and in f64 the larger
+    /// of d2 and d4, both doubled: quantities taken at the ends of the contact (the apex
+    /// amplitude) converge more slowly and less regularly in the degree than V, the
+    /// extrapolation tuned on V can be optimistic for them, and in f64 the sizes stall near
+    /// round-off, where one difference may happen to be small.
+    fn estimate_of(&self, extrapolate: bool, q: impl Fn(&Fit<T>) -> Result<T>) -> Result<f64> {
+        let fine = q(&self.fit)?;
+        let d2 = (fine.clone() - q(&self.coarse)?).abs().to_f64();
+        let floor = roundoff_floor(self.prob.prec) * fine.to_f64().abs();
+        let high = self.prob.prec > 64;
+        let d = match &self.middle {
             Some(mid) => {
-                let d4 = (self.fit.v_hat.clone() - mid).abs().to_f64();
-                if d4 <= d2 / 4.0 && d2 > 0.0 {
-                    (100.0 * d4 * (d4 / d2)).min(d2)
-                } else {
-                    d2
+                let d4 = (fine.clone() - q(mid)?).abs().to_f64();
+                match (extrapolate, high) {
+                    (true, true) if d4 <= d2 / 4.0 && d2 > 0.0 => (100.0 * d4 * (d4 / d2)).min(d2),
+                    (true, _) => d2,
+                    (false, true) => 10.0 * d4.min(d2),
+                    (false, false) => 2.0 * d4.max(d2),
                 }
             }
-            None => d2,
+            None => 2.0 * d2,
         };
-        d + floor
+        Ok(d + floor)
+    }
+
+    /// The absolute error estimate of [`Self::force_hat`] (the rule of
+    /// [`Self::error_estimate`] applied to the force of each degree, extrapolated as V's).
+    pub fn force_error_estimate(&self) -> f64 {
+        self.estimate_of(true, |f| Ok(self.force_of(f)))
+            .unwrap_or(f64::INFINITY)
+    }
+
+    /// The absolute error estimate of the apex amplitude of [`Self::apex`] (the differences
+    /// between the amplitudes of the degrees, not extrapolated).
+    ///
+    /// The round-off of the alternating sums that give the apex coefficients (the Chebyshev
+    /// polynomials are (-1)^k at the apex, and the coefficients are large and cancel) is added:
+    /// 8 units of the working precision times the amplitude built from |c_k|.
+    pub fn apex_amplitude_error_estimate(&self) -> Result<f64> {
+        let ex = self.exponents();
+        let degrees = self.estimate_of(false, |f| self.apex_amplitude_of(&ex, f))?;
+        let p = &self.prob.p;
+        let n = self.fit.basis.degree();
+        let edge = p
+            .clone()
+            .powf(&(self.fit.basis.omega(&p.zero()) - 0.5))
+            .to_f64()
+            .abs();
+        let lams: Vec<f64> = self
+            .fit
+            .basis
+            .families()
+            .iter()
+            .map(|f| match f {
+                crate::basis::Family::Root(j) => ex.lambdas[*j].to_f64(),
+                crate::basis::Family::Fixed(l) => *l,
+                _ => 1.0,
+            })
+            .collect();
+        let pf = p.to_f64();
+        let mut size = 0.0;
+        for (fi, lam) in lams.iter().enumerate() {
+            let abs: f64 = self.fit.coef[fi * n..(fi + 1) * n]
+                .iter()
+                .map(|c| c.to_f64().abs())
+                .sum();
+            let scale = match ex.kind {
+                crate::apex::ApexKind::Power if fi == 0 => 1.0 / lam.abs(),
+                crate::apex::ApexKind::Logarithmic if fi == 0 => 1.0,
+                crate::apex::ApexKind::Finite => pf.powf(-lam) / lam.abs(),
+                _ => 0.0,
+            };
+            size += abs * edge * scale;
+        }
+        let roundoff = 8.0 * 2f64.powi(-(self.prob.prec as i32)) * size;
+        Ok(degrees + roundoff)
     }
 
     /// h(x) = dS/dx at 0 < x < p (p - x given exactly by the caller when known).
     pub fn h(&self, x: T, p_minus_x: T) -> T {
-        let mut buf = vec![x.zero(); self.fit.basis.len()];
-        self.fit.basis.eval(&x, &p_minus_x, &mut buf);
+        Self::h_of(&self.fit, x, p_minus_x)
+    }
+
+    fn h_of(fit: &Fit<T>, x: T, p_minus_x: T) -> T {
+        let mut buf = vec![x.zero(); fit.basis.len()];
+        fit.basis.eval(&x, &p_minus_x, &mut buf);
         let mut acc = x.zero();
-        for (a, b) in buf.iter().zip(&self.fit.coef) {
+        for (a, b) in buf.iter().zip(&fit.coef) {
             acc.mul_add_assign(a, b);
         }
         acc
@@ -766,10 +843,14 @@ impl<T: CachedRules> GenuineCase<T> {
 
     /// P/(alpha t mu cot Theta) = -(2/p) Int_0^p S dx = (2/p) Int_0^p x h(x) dx.
     pub fn force_hat(&self) -> T {
+        self.force_of(&self.fit)
+    }
+
+    fn force_of(&self, fit: &Fit<T>) -> T {
         let p = &self.prob.p;
         let (tol, hmin, tmax) = self.profile_rule();
         let (v, _) = integrate_vec(&p.zero(), p, 1, tol, hmin, tmax, |n, out| {
-            out[0] = n.from_a.clone() * self.h(n.from_a.clone(), n.to_b.clone());
+            out[0] = n.from_a.clone() * Self::h_of(fit, n.from_a.clone(), n.to_b.clone());
         });
         v[0].clone() * 2.0 / p
     }
@@ -899,32 +980,113 @@ impl<T: CachedRules> GenuineCase<T> {
     }
 
     /// The apex exponents (eigen-equation roots) and the leading amplitude A of
-    /// S ~ A x^(-lambda_max) (for the logarithmic case S ~ A ln x; for a finite apex the
-    /// limit S(0+), estimated from S at x = 1e-8 p; an error of that stress evaluation is
-    /// returned).
+    /// S ~ A (p/x)^(lambda_max) (for the logarithmic case S ~ A ln x; for a finite apex the
+    /// limit S(0+), [`Self::finite_apex_limit`]).
     pub fn apex(&self) -> Result<(crate::apex::ApexExponents<T>, T)> {
+        let ex = self.exponents();
+        let amp = self.apex_amplitude_of(&ex, &self.fit)?;
+        Ok((ex, amp))
+    }
+
+    fn exponents(&self) -> crate::apex::ApexExponents<T> {
         let prob = &self.prob;
-        let ex =
-            crate::apex::exponents(prob.ray.m().clone(), prob.beta.clone(), prob.gamma.clone());
-        let p = &prob.p;
-        let n = self.fit.basis.degree();
-        // amplitude of h ~ C x^(-1-lambda) of the first family at x -> 0
-        let omega0 = self.fit.basis.omega(&p.zero());
-        let mut c = p.zero();
-        for k in 0..n {
-            if k % 2 == 0 {
-                c += &self.fit.coef[k];
-            } else {
-                c -= &self.fit.coef[k];
+        crate::apex::exponents(prob.ray.m().clone(), prob.beta.clone(), prob.gamma.clone())
+    }
+
+    /// The coefficients c_j of the apex behaviour h ~ c_j x^(-1 - lambda_j) of each family
+    /// of `fit` (lambda_j the apex exponents at x = 0; the Chebyshev polynomials are
+    /// (-1)^k at x = 0 and the edge factor is p^(Omega(0) - 1/2)).
+    fn apex_coefficients(&self, fit: &Fit<T>) -> Vec<T> {
+        let p = &self.prob.p;
+        let n = fit.basis.degree();
+        let edge = p.clone().powf(&(fit.basis.omega(&p.zero()) - 0.5));
+        (0..fit.basis.families().len())
+            .map(|fi| {
+                let mut c = p.zero();
+                for k in 0..n {
+                    if k % 2 == 0 {
+                        c += &fit.coef[fi * n + k];
+                    } else {
+                        c -= &fit.coef[fi * n + k];
+                    }
+                }
+                c * &edge
+            })
+            .collect()
+    }
+
+    fn apex_amplitude_of(&self, ex: &crate::apex::ApexExponents<T>, fit: &Fit<T>) -> Result<T> {
+        let c = self.apex_coefficients(fit);
+        Ok(match ex.kind {
+            crate::apex::ApexKind::Power => -(c[0].clone() / &ex.lambdas[0]),
+            crate::apex::ApexKind::Logarithmic => c[0].clone(),
+            crate::apex::ApexKind::Finite => self.finite_apex_limit_of(ex, fit, &c)?,
+        })
+    }
+
+    /// For a finite apex (every lambda_j < 0), the limit S(0+) = -Int_0^p h dx, integrated
+    /// with the apex behaviour of each family subtracted and added back in closed form:
+    /// S(0+) = -Int_0^p (h - Sum_j c_j x^(-1 - lambda_j)) dx - Sum_j c_j p^(-lambda_j)/(-lambda_j)
+    /// (`docs/errata.md`, the genuine solution's apex: the stress approaches its limit like
+    /// x^(-lambda_j), which for lambda_j near 0 is far from the limit at any sampled x).
+    pub fn finite_apex_limit(&self) -> Result<T> {
+        let ex = self.exponents();
+        let c = self.apex_coefficients(&self.fit);
+        self.finite_apex_limit_of(&ex, &self.fit, &c)
+    }
+
+    fn finite_apex_limit_of(
+        &self,
+        ex: &crate::apex::ApexExponents<T>,
+        fit: &Fit<T>,
+        c: &[T],
+    ) -> Result<T> {
+        let p = &self.prob.p;
+        // the families' exponents at the apex
+        let lams: Vec<Option<T>> = fit
+            .basis
+            .families()
+            .iter()
+            .map(|f| match f {
+                crate::basis::Family::Root(j) => Some(ex.lambdas[*j].clone()),
+                crate::basis::Family::Fixed(l) => Some(p.lit(*l)),
+                crate::basis::Family::Log | crate::basis::Family::Regular => None,
+            })
+            .collect();
+        if let Some(bad) = lams
+            .iter()
+            .flatten()
+            .find(|l| l.to_f64().is_nan() || l.to_f64() >= 0.0)
+        {
+            return Err(GenuineError::NoConvergence {
+                what: "finite apex limit",
+                detail: format!("an apex exponent {} is not negative", bad.to_f64()),
+            });
+        }
+        let (tol, hmin, tmax) = self.profile_rule();
+        let (v, _) = integrate_vec(&p.zero(), p, 1, tol, hmin, tmax, |n, out| {
+            let x = &n.from_a;
+            let mut r = Self::h_of(fit, x.clone(), n.to_b.clone());
+            for (cj, lj) in c.iter().zip(&lams) {
+                if let Some(l) = lj {
+                    r -= cj.clone() * x.clone().powf(&(-(l.clone() + 1.0)));
+                }
+            }
+            out[0] = r;
+        });
+        let mut s = -v[0].clone();
+        for (cj, lj) in c.iter().zip(&lams) {
+            if let Some(l) = lj {
+                s -= cj.clone() * p.clone().powf(&(-l.clone())) / (-l.clone());
             }
         }
-        let c = c * p.clone().powf(&(omega0 - 0.5));
-        let amp = match ex.kind {
-            crate::apex::ApexKind::Power => -(c / &ex.lambdas[0]),
-            crate::apex::ApexKind::Logarithmic => c,
-            crate::apex::ApexKind::Finite => self.stress_hat(p.clone() * 1e-8)?,
-        };
-        Ok((ex, amp))
+        if !s.is_finite() {
+            return Err(GenuineError::NoConvergence {
+                what: "finite apex limit",
+                detail: format!("not finite at p = {}", p.to_f64()),
+            });
+        }
+        Ok(s)
     }
 
     /// Above f64: p found in f64 (bracketed search), then polished at the working precision
