@@ -8,18 +8,18 @@
 
 use std::path::PathBuf;
 
-use impact::{EdgeLaw, HistoryRow, ImpactCase, Solution};
+use impact::{EdgeLaw, HistoryRow, ImpactCase, Solution, REFERENCE};
 
 use super::field_snapshot::{colormap, VIRIDIS};
 use super::output::{Cell as CsvCell, Column, Table};
 use super::plot::{save, Axis, Cell, ColorBar, Dash, Legend, Note, Page, Panel, Series};
 use super::{cycle_color, palette, Ctx, FigError, Result, Summary};
 
-const C1: f64 = 1870.83;
-const C2: f64 = 1000.0;
-const MASS_RATIO: f64 = 10.0;
-const V0: f64 = 0.01;
-const END: f64 = 10.0;
+const C1: f64 = REFERENCE.c1;
+const C2: f64 = REFERENCE.c2;
+const MASS_RATIO: f64 = REFERENCE.mass_ratio;
+const V0: f64 = REFERENCE.v0_over_c1;
+const END: f64 = REFERENCE.end;
 
 /// The reference case with `law` on the grid of the figure's mode.
 fn solve(ctx: &Ctx, law: EdgeLaw) -> Result<Solution> {

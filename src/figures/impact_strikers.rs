@@ -18,8 +18,9 @@ use super::output::{Cell, Column, Table};
 use super::plot::{save, Axis, Dash, Legend, Page, Panel, Series};
 use super::{cycle_color, Ctx, FigError, Result, Summary};
 
-const C1: f64 = 1870.83;
-const C2: f64 = 1000.0;
+// the half-plane of the benchmark's reference case
+const C1: f64 = impact::REFERENCE.c1;
+const C2: f64 = impact::REFERENCE.c2;
 const STEEL: (f64, f64, f64) = (5900.0, 3200.0, 3.0);
 const THICKNESS: f64 = 0.05;
 const V0: f64 = 0.01;

@@ -170,6 +170,30 @@ struct Sample<T> {
     t: T,
 }
 
+/// The apex coefficient c_j of one family (h ~ c_j x^(-1 - lambda_j)) and the size of the
+/// alternating sum that gives it.
+struct ApexCoefficient<T> {
+    c: T,
+    size: f64,
+}
+
+/// The apex exponent lambda_j of each family of `basis` (`None` for the logarithmic and the
+/// regular families).
+fn family_exponents<T: Real>(
+    ex: &crate::apex::ApexExponents<T>,
+    basis: &Basis<T>,
+) -> Vec<Option<T>> {
+    basis
+        .families()
+        .iter()
+        .map(|f| match f {
+            crate::basis::Family::Root(j) => Some(ex.lambdas[*j].clone()),
+            crate::basis::Family::Fixed(l) => Some(basis.rayleigh().m().lit(*l)),
+            crate::basis::Family::Log | crate::basis::Family::Regular => None,
+        })
+        .collect()
+}
+
 /// One collocation solve.
 #[derive(Clone, Debug)]
 struct Fit<T> {
@@ -598,7 +622,7 @@ impl<T: CachedRules> GenuineCase<T> {
         let prob = Problem::new(material, indenter, p)?;
         let basis = prob.basis(opts.degree, &opts);
         // the coarser sizes of the error estimates: N/2 and 3N/4 (see
-        // [`GenuineCase::error_estimate`] and [`GenuineCase::apex_amplitude_error_estimate`])
+        // [`GenuineCase::error_estimate`] and [`GenuineCase::apex_with_error`])
         let sizes = [opts.degree / 2, 3 * opts.degree / 4 / 2 * 2];
         let rows = prob.row_samples(&basis, opts.h_quad);
         let xs = prob.p.clone() * NORMALISATION_POINT;
@@ -707,20 +731,24 @@ impl<T: CachedRules> GenuineCase<T> {
     /// through N/2 and 3N/4), taken with a factor 100 of margin, and only when the sizes
     /// converge (d4 <= d2/4); otherwise d2.
     pub fn error_estimate(&self) -> f64 {
-        self.estimate_of(true, |f| Ok(f.v_hat.clone()))
+        self.estimate_of(true, &self.fit.v_hat, |f| Ok(f.v_hat.clone()))
             .unwrap_or(f64::INFINITY)
     }
 
-    /// The absolute error estimate of a quantity computed from one solve, by the rule of
-    /// [`Self::error_estimate`] applied to its values at degrees N, N/2 (and 3N/4 above f64),
+    /// The absolute error estimate of a quantity `fine` = q(fit of degree N), by the rule of
+    /// [`Self::error_estimate`] applied to its values at degrees N, N/2 and 3N/4,
     /// plus the round-off floor times its magnitude. Without `extrapolate` the estimate above
     /// f64 is d4 = |q(N) - q(3N/4)| itself (it bounds the 3N/4 solve), and in f64 the larger
     /// of d2 and d4, both doubled: quantities taken at the ends of the contact (the apex
     /// amplitude) converge more slowly and less regularly in the degree than V, the
     /// extrapolation tuned on V can be optimistic for them, and in f64 the sizes stall near
     /// round-off, where one difference may happen to be small.
-    fn estimate_of(&self, extrapolate: bool, q: impl Fn(&Fit<T>) -> Result<T>) -> Result<f64> {
-        let fine = q(&self.fit)?;
+    fn estimate_of(
+        &self,
+        extrapolate: bool,
+        fine: &T,
+        q: impl Fn(&Fit<T>) -> Result<T>,
+    ) -> Result<f64> {
         let d2 = (fine.clone() - q(&self.coarse)?).abs().to_f64();
         let floor = roundoff_floor(self.prob.prec) * fine.to_f64().abs();
         let high = self.prob.prec > 64;
@@ -739,57 +767,50 @@ impl<T: CachedRules> GenuineCase<T> {
         Ok(d + floor)
     }
 
-    /// The absolute error estimate of [`Self::force_hat`] (the rule of
+    /// [`Self::force_hat`] with its absolute error estimate (the rule of
     /// [`Self::error_estimate`] applied to the force of each degree, extrapolated as V's).
-    pub fn force_error_estimate(&self) -> f64 {
-        self.estimate_of(true, |f| Ok(self.force_of(f)))
-            .unwrap_or(f64::INFINITY)
+    pub fn force_hat_with_error(&self) -> (T, f64) {
+        let fine = self.force_hat();
+        let err = self
+            .estimate_of(true, &fine, |f| Ok(self.force_of(f)))
+            .unwrap_or(f64::INFINITY);
+        (fine, err)
     }
 
-    /// The absolute error estimate of the apex amplitude of [`Self::apex`] (the differences
-    /// between the amplitudes of the degrees, not extrapolated).
-    ///
-    /// The round-off of the alternating sums that give the apex coefficients (the Chebyshev
-    /// polynomials are (-1)^k at the apex, and the coefficients are large and cancel) is added:
-    /// 8 units of the working precision times the amplitude built from |c_k|.
-    pub fn apex_amplitude_error_estimate(&self) -> Result<f64> {
+    /// [`Self::apex`] with the absolute error estimate of the amplitude (infinite when a
+    /// coarser basis size gives no amplitude): the differences
+    /// between the amplitudes of the degrees (not extrapolated), plus the round-off of the
+    /// alternating sums that give the apex coefficients (the Chebyshev polynomials are (-1)^k
+    /// at the apex): 8 units of the working precision times the amplitude built from |c_k|.
+    pub fn apex_with_error(&self) -> Result<(crate::apex::ApexExponents<T>, T, f64)> {
         let ex = self.exponents();
-        let degrees = self.estimate_of(false, |f| self.apex_amplitude_of(&ex, f))?;
-        let p = &self.prob.p;
-        let n = self.fit.basis.degree();
-        let edge = p
-            .clone()
-            .powf(&(self.fit.basis.omega(&p.zero()) - 0.5))
-            .to_f64()
-            .abs();
-        let lams: Vec<f64> = self
-            .fit
-            .basis
-            .families()
-            .iter()
-            .map(|f| match f {
-                crate::basis::Family::Root(j) => ex.lambdas[*j].to_f64(),
-                crate::basis::Family::Fixed(l) => *l,
-                _ => 1.0,
+        let apex = self.apex_coefficients(&self.fit);
+        let amp = self.amplitude_from(&ex, &self.fit, &apex)?;
+        // a coarser size whose amplitude cannot be computed leaves no estimate (infinite)
+        let degrees = self
+            .estimate_of(false, &amp, |f| {
+                self.amplitude_from(&ex, f, &self.apex_coefficients(f))
             })
-            .collect();
-        let pf = p.to_f64();
-        let mut size = 0.0;
-        for (fi, lam) in lams.iter().enumerate() {
-            let abs: f64 = self.fit.coef[fi * n..(fi + 1) * n]
-                .iter()
-                .map(|c| c.to_f64().abs())
-                .sum();
-            let scale = match ex.kind {
-                crate::apex::ApexKind::Power if fi == 0 => 1.0 / lam.abs(),
-                crate::apex::ApexKind::Logarithmic if fi == 0 => 1.0,
-                crate::apex::ApexKind::Finite => pf.powf(-lam) / lam.abs(),
-                _ => 0.0,
-            };
-            size += abs * edge * scale;
-        }
+            .unwrap_or(f64::INFINITY);
+        let lams = family_exponents(&ex, &self.fit.basis);
+        let pf = self.prob.p.to_f64();
+        let size: f64 = apex
+            .iter()
+            .zip(&lams)
+            .enumerate()
+            .map(|(fi, (ac, lam))| {
+                let lam = lam.as_ref().map_or(1.0, |l| l.to_f64());
+                let scale = match ex.kind {
+                    crate::apex::ApexKind::Power if fi == 0 => 1.0 / lam.abs(),
+                    crate::apex::ApexKind::Logarithmic if fi == 0 => 1.0,
+                    crate::apex::ApexKind::Finite => pf.powf(-lam) / lam.abs(),
+                    _ => 0.0,
+                };
+                ac.size * scale
+            })
+            .sum();
         let roundoff = 8.0 * 2f64.powi(-(self.prob.prec as i32)) * size;
-        Ok(degrees + roundoff)
+        Ok((ex, amp, degrees + roundoff))
     }
 
     /// h(x) = dS/dx at 0 < x < p (p - x given exactly by the caller when known).
@@ -984,7 +1005,7 @@ impl<T: CachedRules> GenuineCase<T> {
     /// limit S(0+), [`Self::finite_apex_limit`]).
     pub fn apex(&self) -> Result<(crate::apex::ApexExponents<T>, T)> {
         let ex = self.exponents();
-        let amp = self.apex_amplitude_of(&ex, &self.fit)?;
+        let amp = self.amplitude_from(&ex, &self.fit, &self.apex_coefficients(&self.fit))?;
         Ok((ex, amp))
     }
 
@@ -995,64 +1016,66 @@ impl<T: CachedRules> GenuineCase<T> {
 
     /// The coefficients c_j of the apex behaviour h ~ c_j x^(-1 - lambda_j) of each family
     /// of `fit` (lambda_j the apex exponents at x = 0; the Chebyshev polynomials are
-    /// (-1)^k at x = 0 and the edge factor is p^(Omega(0) - 1/2)).
-    fn apex_coefficients(&self, fit: &Fit<T>) -> Vec<T> {
+    /// (-1)^k at x = 0 and the edge factor is p^(Omega(0) - 1/2)), each with the size of its
+    /// alternating sum (Sum |c_k| times the edge factor, for the round-off).
+    fn apex_coefficients(&self, fit: &Fit<T>) -> Vec<ApexCoefficient<T>> {
         let p = &self.prob.p;
         let n = fit.basis.degree();
         let edge = p.clone().powf(&(fit.basis.omega(&p.zero()) - 0.5));
-        (0..fit.basis.families().len())
-            .map(|fi| {
+        fit.coef
+            .chunks(n)
+            .map(|family| {
                 let mut c = p.zero();
-                for k in 0..n {
+                let mut size = 0.0;
+                for (k, ck) in family.iter().enumerate() {
                     if k % 2 == 0 {
-                        c += &fit.coef[fi * n + k];
+                        c += ck;
                     } else {
-                        c -= &fit.coef[fi * n + k];
+                        c -= ck;
                     }
+                    size += ck.to_f64().abs();
                 }
-                c * &edge
+                ApexCoefficient {
+                    c: c * &edge,
+                    size: size * edge.to_f64().abs(),
+                }
             })
             .collect()
     }
 
-    fn apex_amplitude_of(&self, ex: &crate::apex::ApexExponents<T>, fit: &Fit<T>) -> Result<T> {
-        let c = self.apex_coefficients(fit);
+    fn amplitude_from(
+        &self,
+        ex: &crate::apex::ApexExponents<T>,
+        fit: &Fit<T>,
+        apex: &[ApexCoefficient<T>],
+    ) -> Result<T> {
         Ok(match ex.kind {
-            crate::apex::ApexKind::Power => -(c[0].clone() / &ex.lambdas[0]),
-            crate::apex::ApexKind::Logarithmic => c[0].clone(),
-            crate::apex::ApexKind::Finite => self.finite_apex_limit_of(ex, fit, &c)?,
+            crate::apex::ApexKind::Power => -(apex[0].c.clone() / &ex.lambdas[0]),
+            crate::apex::ApexKind::Logarithmic => apex[0].c.clone(),
+            crate::apex::ApexKind::Finite => self.finite_apex_limit_of(ex, fit, apex)?,
         })
     }
 
     /// For a finite apex (every lambda_j < 0), the limit S(0+) = -Int_0^p h dx, integrated
     /// with the apex behaviour of each family subtracted and added back in closed form:
     /// S(0+) = -Int_0^p (h - Sum_j c_j x^(-1 - lambda_j)) dx - Sum_j c_j p^(-lambda_j)/(-lambda_j)
-    /// (`docs/errata.md`, the genuine solution's apex: the stress approaches its limit like
-    /// x^(-lambda_j), which for lambda_j near 0 is far from the limit at any sampled x).
+    /// (`docs/errata.md`, section 9: the stress approaches its limit like x^(-lambda_j),
+    /// which for lambda_j near 0 is far from the limit at any sampled x).
     pub fn finite_apex_limit(&self) -> Result<T> {
         let ex = self.exponents();
-        let c = self.apex_coefficients(&self.fit);
-        self.finite_apex_limit_of(&ex, &self.fit, &c)
+        let apex = self.apex_coefficients(&self.fit);
+        self.finite_apex_limit_of(&ex, &self.fit, &apex)
     }
 
     fn finite_apex_limit_of(
         &self,
         ex: &crate::apex::ApexExponents<T>,
         fit: &Fit<T>,
-        c: &[T],
+        apex: &[ApexCoefficient<T>],
     ) -> Result<T> {
         let p = &self.prob.p;
-        // the families' exponents at the apex
-        let lams: Vec<Option<T>> = fit
-            .basis
-            .families()
-            .iter()
-            .map(|f| match f {
-                crate::basis::Family::Root(j) => Some(ex.lambdas[*j].clone()),
-                crate::basis::Family::Fixed(l) => Some(p.lit(*l)),
-                crate::basis::Family::Log | crate::basis::Family::Regular => None,
-            })
-            .collect();
+        let lams = family_exponents(ex, &fit.basis);
+        let c: Vec<&T> = apex.iter().map(|a| &a.c).collect();
         if let Some(bad) = lams
             .iter()
             .flatten()
@@ -1069,7 +1092,7 @@ impl<T: CachedRules> GenuineCase<T> {
             let mut r = Self::h_of(fit, x.clone(), n.to_b.clone());
             for (cj, lj) in c.iter().zip(&lams) {
                 if let Some(l) = lj {
-                    r -= cj.clone() * x.clone().powf(&(-(l.clone() + 1.0)));
+                    r -= (*cj).clone() * x.clone().powf(&(-(l.clone() + 1.0)));
                 }
             }
             out[0] = r;
@@ -1077,7 +1100,7 @@ impl<T: CachedRules> GenuineCase<T> {
         let mut s = -v[0].clone();
         for (cj, lj) in c.iter().zip(&lams) {
             if let Some(l) = lj {
-                s -= cj.clone() * p.clone().powf(&(-l.clone())) / (-l.clone());
+                s -= (*cj).clone() * p.clone().powf(&(-l.clone())) / (-l.clone());
             }
         }
         if !s.is_finite() {

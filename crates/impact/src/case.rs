@@ -18,6 +18,31 @@ use crate::tables::Tables;
 /// kappa^-2 while the error, dominated by the cells in space, does not fall.
 pub const KAPPA_MIN: f64 = 0.5;
 
+/// The parameters of the benchmark's reference case ([`ImpactCase::reference`]).
+#[derive(Clone, Copy, Debug)]
+pub struct ReferenceCase {
+    /// The half-plane's c1 (m/s), the wedge paper's material.
+    pub c1: f64,
+    /// The half-plane's c2 (m/s).
+    pub c2: f64,
+    /// m0/(rho R^2).
+    pub mass_ratio: f64,
+    /// V0/c1.
+    pub v0_over_c1: f64,
+    /// End time c1 t/R.
+    pub end: f64,
+}
+
+/// The benchmark's reference case: a free rigid cylinder with the parabolic profile
+/// x^2/(2R), m0/(rho R^2) = 10, V0/c1 = 0.01, c1 = 1870.83 m/s, c2 = 1000 m/s, to c1 t/R = 10.
+pub const REFERENCE: ReferenceCase = ReferenceCase {
+    c1: 1870.83,
+    c2: 1000.0,
+    mass_ratio: 10.0,
+    v0_over_c1: 0.01,
+    end: 10.0,
+};
+
 /// The striker's motion in dimensionless form.
 #[derive(Clone, Debug)]
 pub enum Drive {
@@ -74,19 +99,18 @@ impl ImpactCase {
         }
     }
 
-    /// The benchmark's reference case: a free rigid cylinder with the parabolic profile
-    /// x^2/(2R), m0/(rho R^2) = 10, V0/c1 = 0.01, on the half-plane c2/c1 = 1000/1870.83
-    /// (the wedge paper's material), to c1 t/R = 10, under `law`, with the default grid.
+    /// The benchmark's reference case ([`REFERENCE`]) under `law`, with the default grid.
     pub fn reference(law: EdgeLaw) -> Self {
+        let r = REFERENCE;
         ImpactCase::new(
-            lamb::poisson_of(&(1000.0f64 / 1870.83).powi(2)),
+            lamb::poisson_of(&(r.c2 / r.c1).powi(2)),
             Profile::Parabola { radius: 1.0 },
             Drive::Free {
-                mass_ratio: 10.0,
-                v0_over_c1: 0.01,
+                mass_ratio: r.mass_ratio,
+                v0_over_c1: r.v0_over_c1,
             },
             law,
-            10.0,
+            r.end,
         )
     }
 

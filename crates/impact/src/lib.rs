@@ -18,7 +18,7 @@ pub mod profile;
 pub mod striker;
 pub mod tables;
 
-pub use case::{Drive, HistoryRow, ImpactCase, Solution, Stage, Value};
+pub use case::{Drive, HistoryRow, ImpactCase, ReferenceCase, Solution, Stage, Value, REFERENCE};
 pub use error::{ImpactError, Result};
 pub use march::EdgeLaw;
 pub use profile::Profile;

@@ -86,14 +86,7 @@ pub fn case_for_speed<T: CachedRules>(
             Ok(f.clone().abs().to_f64()
                 <= (c.matching()?.rel_error * target.to_f64().abs()).max(floor))
         };
-    if let Some(case) = secant_polish(
-        like.lit(p64),
-        slope,
-        (lo, hi),
-        8,
-        |x: &T| solve_at(x),
-        |f, c| settled(f, c),
-    )? {
+    if let Some(case) = secant_polish(like.lit(p64), slope, (lo, hi), 8, &solve_at, &settled)? {
         return Ok(case);
     }
     let g = |p: &T| -> Result<T> {
