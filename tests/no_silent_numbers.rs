@@ -238,7 +238,7 @@ fn messages_are_one_readable_line_and_grids_are_capped() {
                 "--speed",
                 "1e6",
             ],
-            "V/(c1 cot Theta)",
+            "indenter speeds reached",
         ),
     ] {
         let (code, out, err) = wedge(&args);

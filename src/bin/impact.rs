@@ -15,9 +15,10 @@ use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
+use cli::num;
 use complexfn::quadrature::CachedRules;
 use complexfn::{Precision, Real};
-use dyncontact::{num, VERSION};
+use dyncontact::VERSION;
 use lamb::{Estimate, HalfPlane, LambError, Triple};
 use rug::Float;
 use serde_json::{Map, Value};
@@ -44,6 +45,9 @@ enum Command {
     /// D, for each speed range and edge law (docs/edge.md).
     Edge(impact_edge::EdgeArgs),
 }
+
+#[path = "../cli.rs"]
+mod cli;
 
 #[path = "../impact_run.rs"]
 mod impact_run;

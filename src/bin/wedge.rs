@@ -9,16 +9,19 @@ use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use complexfn::Precision;
-use dyncontact::{
-    field_report, linspace, num, parse_params, parse_points, parse_range, solve, CaseInput, Speed,
-    ESTIMATED_KEYS, FIELD_KEYS, SOLVE_KEYS, VERSION,
+use cli::{
+    field_json, linspace, parse_params, parse_points, parse_range, solve_csv_header, solve_csv_row,
+    solve_json, stress_json,
 };
+use dyncontact::{solve, CaseInput, SolveReport, Speed, FIELD_KEYS, VERSION};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rug::Float;
 use serde_json::{Map, Value};
 use wedge::{Coupling, Indenter, Material, Param, Result, Solution, WedgeError};
+
+#[path = "../cli.rs"]
+mod cli;
 
 /// Dynamic indentation of an elastic half-plane by a rigid wedge (plane strain), with
 /// Coulomb friction and tangential-displacement coupling.
@@ -272,10 +275,11 @@ fn run(cli: Cli) -> Result<()> {
         Command::Solve { case, speed, out } => {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
             let r = solve(&inp, &speed_of(&speed)?, true)?;
+            let v = solve_json(&r);
             if out.json {
-                println!("{}", Value::Object(r));
-            } else {
-                print_table(&r);
+                println!("{v}");
+            } else if let Value::Object(m) = v {
+                print_table(&m);
             }
         }
         Command::Stress {
@@ -286,30 +290,16 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
             let at = parse_params("at", &at)?;
-            let digits = inp.out_digits();
-            let (values, err) = dyncontact::stress_values(&inp, &speed_of(&speed)?, &at)?;
-            let mut m = Map::new();
-            m.insert("solution".into(), Value::String(inp.solution.name().into()));
-            m.insert(
-                "r_over_alpha_t".into(),
-                Value::Array(at.iter().map(|x| num(x.text())).collect()),
-            );
-            m.insert("sigma_over_mu_cot_theta".into(), Value::Array(values));
-            m.insert("error_estimate".into(), num(&format!("{err:e}")));
-            m.insert("digits".into(), Value::Number(digits.into()));
+            let r = dyncontact::stress(&inp, &speed_of(&speed)?, &at)?;
             if out.json {
-                println!("{}", Value::Object(m));
+                println!("{}", stress_json(&r));
             } else {
-                println!("solution: {}", inp.solution.name());
+                println!("solution: {}", r.solution.name());
                 println!("{:>16}  sigma/(mu cot Theta)", "r/(alpha t)");
-                if let (Some(Value::Array(a)), Some(Value::Array(s))) =
-                    (m.get("r_over_alpha_t"), m.get("sigma_over_mu_cot_theta"))
-                {
-                    for (x, y) in a.iter().zip(s) {
-                        println!("{x:>16}  {y}");
-                    }
+                for (x, y) in r.r_over_alpha_t.iter().zip(&r.sigma_over_mu_cot_theta) {
+                    println!("{:>16}  {}  (+- {:.1e})", x.text(), y.text(), y.error());
                 }
-                println!("relative error estimate: {err:.1e}");
+                println!("relative error estimate: {:.1e}", r.error_estimate);
             }
         }
         Command::Field {
@@ -320,33 +310,14 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let inp = input(&case, out.digits, Defaults::Paper)?;
             let pts = parse_points("at", &at)?;
-            let digits = inp.out_digits();
-            let m = match inp.precision()? {
-                Precision::F64 => {
-                    field_report(&inp.case(&speed_of(&speed)?, &0.0_f64)?, &pts, digits)?
-                }
-                Precision::Bits(b) => field_report(
-                    &inp.case(&speed_of(&speed)?, &Float::with_val(b, 0))?,
-                    &pts,
-                    digits,
-                )?,
-            };
+            let r = dyncontact::field(&inp, &speed_of(&speed)?, &pts)?;
             if out.json {
-                println!("{}", Value::Object(m));
+                println!("{}", field_json(&r));
             } else {
-                println!("solution: {}", inp.solution.name());
+                println!("solution: {}", r.solution.name());
                 println!("{}", FIELD_KEYS.join("  "));
-                for i in 0..pts.len() {
-                    let row: Vec<String> = FIELD_KEYS
-                        .iter()
-                        .map(|k| {
-                            m.get(*k)
-                                .and_then(|a| a.get(i))
-                                .map(|v| v.to_string())
-                                .unwrap_or_default()
-                        })
-                        .collect();
-                    println!("{}", row.join("  "));
+                for pt in &r.points {
+                    println!("{}", pt.join("  "));
                 }
             }
         }
@@ -382,17 +353,11 @@ fn run(cli: Cli) -> Result<()> {
                 for l in header_lines(&inp) {
                     writeln!(lock, "{l}").ok();
                 }
-                let errs = ESTIMATED_KEYS.iter().map(|k| format!("err_{k}"));
-                let header: Vec<String> = SOLVE_KEYS
-                    .iter()
-                    .map(|k| k.to_string())
-                    .chain(errs)
-                    .collect();
-                writeln!(lock, "{}", header.join(",")).ok();
+                writeln!(lock, "{}", solve_csv_header()).ok();
             }
             let mut first = true;
             for chunk in alphas.chunks(CURVE_CHUNK) {
-                let rows: Vec<Result<Map<String, Value>>> = chunk
+                let rows: Vec<Result<SolveReport>> = chunk
                     .par_iter()
                     .map(|a| {
                         let r = dyncontact::curve_row(&inp, a);
@@ -414,20 +379,10 @@ fn run(cli: Cli) -> Result<()> {
                         }
                     };
                     if json {
-                        write!(lock, "{}{}", if first { "" } else { "," }, Value::Object(r)).ok();
+                        let sep = if first { "" } else { "," };
+                        write!(lock, "{sep}{}", solve_json(&r)).ok();
                     } else {
-                        let est = r.get("error_estimates");
-                        let cells: Vec<String> = SOLVE_KEYS
-                            .iter()
-                            .map(|k| r.get(*k))
-                            .chain(ESTIMATED_KEYS.iter().map(|k| est.and_then(|e| e.get(*k))))
-                            .map(|v| match v {
-                                Some(Value::String(s)) => s.clone(),
-                                Some(Value::Null) | None => String::new(),
-                                Some(v) => v.to_string(),
-                            })
-                            .collect();
-                        writeln!(lock, "{}", cells.join(",")).ok();
+                        writeln!(lock, "{}", solve_csv_row(&r)).ok();
                     }
                     first = false;
                 }

@@ -126,19 +126,10 @@ pub const GENUINE: VariantStyle = VariantStyle {
     dash: Dash::Dotted,
 };
 
-/// The genuine solution in f64 for contact speed p = alpha/c1 (the solver's default options:
-/// its error estimate, from two basis sizes, is far below plotting accuracy).
-pub fn genuine_case(mat: &Material, ind: &Indenter, p: f64) -> Result<genuine::GenuineCase> {
-    genuine::GenuineCase::solve(mat, ind, p, genuine::SolveOptions::default())
-        .map_err(|e| FigError(format!("genuine solution at p = {p}: {e}")))
-}
-
-/// V/(c1 cot Theta) in f64 for any solution variant (the genuine one through its own solver).
+/// V/(c1 cot Theta) in f64 for any solution variant ([`dyncontact::solve_at`]; the genuine
+/// solution's error estimate, from its basis sizes, is far below plotting accuracy).
 pub fn v_hat(mat: &Material, ind: &Indenter, p: f64, solution: Solution) -> Result<f64> {
-    match solution {
-        Solution::Genuine => Ok(genuine_case(mat, ind, p)?.v_hat()),
-        s => Ok(wedge::Case::new(mat, ind, p, s)?.v_hat()?),
-    }
+    Ok(dyncontact::solve_at(mat, ind, solution, p)?.v_hat()?.value)
 }
 
 /// The paper's material (c1 = 1870.83 m/s, c2 = 1000 m/s).

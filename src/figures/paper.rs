@@ -20,7 +20,9 @@ use wedge::{ApexRegime, Case, Coupling, Indenter, Material, Solution};
 use super::output::{Cell, Column, Table};
 use super::plot::{save, Axis, Dash, Legend, Note, Page, Panel, Series};
 use super::{fmt_num, interior, logspace, material, palette, Ctx, FigError, Result, Summary};
-use super::{genuine_case, v_hat, VariantStyle, GENUINE, VARIANTS};
+use super::{v_hat, VariantStyle, GENUINE, VARIANTS};
+use dyncontact::{solve_at, Solved};
+use wedge::ContactSolution;
 
 /// m_R = c_R/c1 of a material.
 pub fn m_r(mat: &Material) -> Result<f64> {
@@ -570,13 +572,17 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         .iter()
         .map(|c| c.apex())
         .collect::<std::result::Result<_, _>>()?;
-    let gcases: Vec<genuine::GenuineCase> = STRESS_GAMMAS
+    // the genuine solution of each friction coefficient, and its apex exponent
+    let gcases: Vec<Solved<f64>> = STRESS_GAMMAS
         .par_iter()
-        .map(|&g| genuine_case(&mat, &Indenter::new(theta, g, Coupling::On)?, p))
+        .map(|&g| {
+            let ind = Indenter::new(theta, g, Coupling::On)?;
+            Ok(solve_at(&mat, &ind, Solution::Genuine, p)?)
+        })
         .collect::<Result<_>>()?;
-    let gapex: Vec<(genuine::ApexExponents, f64)> = gcases
+    let gapex: Vec<wedge::ApexLeading<f64>> = gcases
         .iter()
-        .map(|g| g.apex())
+        .map(|g| g.apex_leading())
         .collect::<std::result::Result<_, _>>()?;
     let along = contact_fractions(ctx.points(200, 8));
     let near = logspace(1e-6, 1e-1, ctx.points(51, 6));
@@ -594,19 +600,12 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         .par_iter()
         .map(|&(g, genuine, apex_panel, frac)| {
             let x = p * frac;
-            let (sigma, lead) = if genuine {
-                let sigma = gcases[g].stress_hat(x)?;
-                let (ex, amp) = &gapex[g];
-                let lead = apex_panel.then(|| genuine_leading_term(ex, *amp, x));
-                (sigma, lead)
+            let solved: &dyn ContactSolution<f64> = if genuine { &gcases[g] } else { &cases[g] };
+            let sigma = solved.stress_hat(&x)?.value;
+            let lead = if apex_panel {
+                Some(solved.apex_leading_term(&x)?)
             } else {
-                let case = &cases[g];
-                let lead = if apex_panel {
-                    Some(case.apex_leading_term(&x)?)
-                } else {
-                    None
-                };
-                (case.stress_hat(&x)?.value, lead)
+                None
             };
             ctx.tick();
             Ok(StressPoint {
@@ -676,8 +675,8 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
         let a = &apexes[q.gamma_index];
         let two_o0 = 2.0 * cases[q.gamma_index].omega0();
         let (solution, regime, exponent) = if q.genuine {
-            let ex = &gapex[q.gamma_index].0;
-            (Solution::Genuine, ex.kind.name(), genuine_exponent(ex))
+            let ex = &gapex[q.gamma_index];
+            (Solution::Genuine, ex.regime.name(), ex.exponent)
         } else {
             (STRESS_SOLUTION, a.regime.name(), two_o0)
         };
@@ -733,7 +732,7 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
             pts.iter()
                 .filter(move |q| q.gamma_index == g && q.apex_panel == apex_panel && q.genuine)
         };
-        let lambda = genuine_exponent(&gapex[g].0);
+        let lambda = gapex[g].exponent;
         contact.series.push(Series::new(
             format!("γ = {gamma}, genuine: apex stress ∝ (r/αt)^(−{lambda:.4})"),
             genuine_pts(false).map(|q| (p * q.frac, q.sigma)).collect(),
@@ -807,16 +806,6 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
 /// logarithmic apex.
 pub fn genuine_exponent(ex: &genuine::ApexExponents) -> f64 {
     ex.leading().copied().unwrap_or(0.0)
-}
-
-/// The leading apex term of the genuine stress at x = r/(c1 t): A x^(-lambda) for a power
-/// singularity, A ln x for a logarithmic apex, the limit A for a finite one.
-pub fn genuine_leading_term(ex: &genuine::ApexExponents, amplitude: f64, x: f64) -> f64 {
-    match ex.kind {
-        genuine::ApexKind::Power => amplitude * x.powf(-genuine_exponent(ex)),
-        genuine::ApexKind::Logarithmic => amplitude * x.ln(),
-        genuine::ApexKind::Finite => amplitude,
-    }
 }
 
 /// fig6: contact stress, Theta = 86 deg.

@@ -228,7 +228,7 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
 }
 
 /// One grid node: the paper's regime and 2 Omega0, the genuine regime and exponent.
-type Cellv = (ApexRegime, f64, genuine::ApexKind, f64);
+type Cellv = (ApexRegime, f64, wedge::ApexRegime, f64);
 
 /// Contour levels of the genuine apex exponent lambda.
 pub const GENUINE_LEVELS: [f64; 8] = [0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.35, 0.4];

@@ -23,27 +23,11 @@
 
 use complexfn::{Rayleigh, Real};
 
-/// What the genuine apex stress does.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ApexKind {
-    /// S -> finite limit (gamma = 0 with coupling: only a negative root).
-    Finite,
-    /// S ~ ln x (beta = gamma = 0: double root t = 0).
-    Logarithmic,
-    /// S ~ x^(-lambda) with lambda > 0.
-    Power,
-}
-
-impl ApexKind {
-    /// The name used in outputs: `finite`, `logarithmic` or `power` (as the paper's regimes).
-    pub fn name(self) -> &'static str {
-        match self {
-            ApexKind::Finite => "finite",
-            ApexKind::Logarithmic => "logarithmic",
-            ApexKind::Power => "power",
-        }
-    }
-}
+/// What the genuine apex stress does: the paper's three regimes ([`ApexRegime`]), decided
+/// here by the roots of the eigen-equation: `Finite` (gamma = 0 with coupling: only a negative
+/// root), `Logarithmic` (beta = gamma = 0: double root t = 0), `Power` (a root lambda > 0,
+/// S ~ x^(-lambda)).
+pub use wedge::ApexRegime;
 
 /// The roots of the apex eigen-equation.
 #[derive(Clone, Debug, PartialEq)]
@@ -52,7 +36,7 @@ pub struct ApexExponents<T = f64> {
     /// from the most singular.
     pub lambdas: Vec<T>,
     /// The regime.
-    pub kind: ApexKind,
+    pub kind: ApexRegime,
 }
 
 impl<T: Real> ApexExponents<T> {
@@ -60,7 +44,7 @@ impl<T: Real> ApexExponents<T> {
     /// singularity, 0 for a finite or logarithmic apex.
     pub fn leading(&self) -> Option<&T> {
         match self.kind {
-            ApexKind::Power => self.lambdas.first(),
+            ApexRegime::Power => self.lambdas.first(),
             _ => None,
         }
     }
@@ -110,11 +94,11 @@ pub fn exponents<T: Real>(m: T, beta: T, gamma: T) -> ApexExponents<T> {
     let ts = quadratic_roots(&m.one(), &b, &(beta * &gamma));
     let lambdas: Vec<T> = ts.into_iter().map(lambda_of_t).collect();
     let kind = if lambdas.len() == 1 && lambdas[0] == 0.0 {
-        ApexKind::Logarithmic
+        ApexRegime::Logarithmic
     } else if lambdas.iter().any(|l| *l > 0.0) {
-        ApexKind::Power
+        ApexRegime::Power
     } else {
-        ApexKind::Finite
+        ApexRegime::Finite
     };
     ApexExponents { lambdas, kind }
 }
@@ -143,10 +127,10 @@ mod tests {
         let omega0 = (m * m * beta).atan() / std::f64::consts::PI;
         assert_eq!(e.lambdas.len(), 1);
         assert!((e.lambdas[0] - 2.0 * omega0).abs() < 1e-15);
-        assert_eq!(e.kind, ApexKind::Finite);
-        assert_eq!(exponents(m, 0.0, 0.0).kind, ApexKind::Logarithmic);
+        assert_eq!(e.kind, ApexRegime::Finite);
+        assert_eq!(exponents(m, 0.0, 0.0).kind, ApexRegime::Logarithmic);
         let f = exponents(m, beta, 0.001);
-        assert_eq!(f.kind, ApexKind::Power);
+        assert_eq!(f.kind, ApexRegime::Power);
         assert!(f.lambdas[0] > 0.0 && f.lambdas[1] < 0.0);
     }
 

@@ -52,7 +52,7 @@ impl<T: Real> Basis<T> {
     ) -> Self {
         let m = ray.m().clone();
         let ex = crate::apex::exponents(m, beta.clone(), gamma.clone());
-        let mut families: Vec<Family> = if ex.kind == crate::apex::ApexKind::Logarithmic {
+        let mut families: Vec<Family> = if ex.kind == wedge::ApexRegime::Logarithmic {
             vec![Family::Log]
         } else {
             (0..ex.lambdas.len()).map(Family::Root).collect()

@@ -45,3 +45,14 @@ pub(crate) fn invalid(
         range: range.into(),
     }
 }
+
+/// The genuine solver's errors as the wedge crate's (for [`wedge::ContactSolution`]): a
+/// wedge error passes unchanged, the solver's own become [`wedge::WedgeError::Solver`].
+impl From<GenuineError> for wedge::WedgeError {
+    fn from(e: GenuineError) -> Self {
+        match e {
+            GenuineError::Wedge(w) => w,
+            other => wedge::WedgeError::Solver(other.to_string()),
+        }
+    }
+}

@@ -6,7 +6,9 @@
 //! * [`quad`]: the quadrature rules (fixed-step, exact endpoint offsets, any precision);
 //! * [`lsq`]: least squares by Householder QR with column pivoting, any precision;
 //! * [`solver`]: the singular integral equation, its collocation solve and the solved case
-//!   [`GenuineCase`].
+//!   [`GenuineCase`];
+//! * [`solution`]: [`GenuineCase`] behind the one interface of solved cases,
+//!   [`wedge::ContactSolution`].
 #![warn(missing_docs)]
 
 pub mod apex;
@@ -15,9 +17,11 @@ pub mod error;
 pub mod kernels;
 pub mod lsq;
 pub mod quad;
+pub mod solution;
 pub mod solver;
 
-pub use apex::{ApexExponents, ApexKind};
+pub use apex::ApexExponents;
 pub use error::{GenuineError, Result};
 pub use kernels::{ContourDisplacement, Lamb};
+pub use solution::GenuineSolver;
 pub use solver::{load_through_kernels, roundoff_floor, GenuineCase, SolveOptions};

@@ -801,9 +801,9 @@ impl<T: CachedRules> GenuineCase<T> {
             .map(|(fi, (ac, lam))| {
                 let lam = lam.as_ref().map_or(1.0, |l| l.to_f64());
                 let scale = match ex.kind {
-                    crate::apex::ApexKind::Power if fi == 0 => 1.0 / lam.abs(),
-                    crate::apex::ApexKind::Logarithmic if fi == 0 => 1.0,
-                    crate::apex::ApexKind::Finite => pf.powf(-lam) / lam.abs(),
+                    wedge::ApexRegime::Power if fi == 0 => pf.powf(-lam) / lam.abs(),
+                    wedge::ApexRegime::Logarithmic if fi == 0 => 1.0,
+                    wedge::ApexRegime::Finite => pf.powf(-lam) / lam.abs(),
                     _ => 0.0,
                 };
                 ac.size * scale
@@ -927,16 +927,21 @@ impl<T: CachedRules> GenuineCase<T> {
     /// The slip direction (8) as the wedge crate states it (du_r/dt > 0, u_r = u_x on x > 0)
     /// at 8 sample points of the contact; true when gamma = 0.
     pub fn slip_direction_ok(&self) -> Result<bool> {
+        Ok(self.slip_check()?.0)
+    }
+
+    /// The slip direction check and the smallest slip rate found at the 8 sample points
+    /// (infinite when gamma = 0, where (8) does not apply and nothing is sampled).
+    pub fn slip_check(&self) -> Result<(bool, f64)> {
         if self.prob.gamma == 0.0 {
-            return Ok(true);
+            return Ok((true, f64::INFINITY));
         }
+        let mut min = f64::INFINITY;
         for i in 1..=8 {
             let x = self.prob.p.clone() * (i as f64) / 9.0;
-            if self.slip_rate(x)? <= 0.0 {
-                return Ok(false);
-            }
+            min = min.min(self.slip_rate(x)?.to_f64());
         }
-        Ok(true)
+        Ok((min > 0.0, min))
     }
 
     /// The normal gap outside the contact, g(x) = -V_hat + x - (U_y + beta U_x) at x0 > p (over
@@ -1000,9 +1005,10 @@ impl<T: CachedRules> GenuineCase<T> {
         Ok(true)
     }
 
-    /// The apex exponents (eigen-equation roots) and the leading amplitude A of
-    /// S ~ A (p/x)^(lambda_max) (for the logarithmic case S ~ A ln x; for a finite apex the
-    /// limit S(0+), [`Self::finite_apex_limit`]).
+    /// The apex exponents (eigen-equation roots) and the leading amplitude A in the paper's
+    /// normalisation (eqs (41)-(43)): S ~ A (p/x)^(lambda_max) for a power singularity,
+    /// S ~ A ln(2 p/x) + O(1) for a logarithmic apex, and for a finite apex the limit S(0+)
+    /// ([`Self::finite_apex_limit`]).
     pub fn apex(&self) -> Result<(crate::apex::ApexExponents<T>, T)> {
         let ex = self.exponents();
         let amp = self.amplitude_from(&ex, &self.fit, &self.apex_coefficients(&self.fit))?;
@@ -1050,9 +1056,14 @@ impl<T: CachedRules> GenuineCase<T> {
         apex: &[ApexCoefficient<T>],
     ) -> Result<T> {
         Ok(match ex.kind {
-            crate::apex::ApexKind::Power => -(apex[0].c.clone() / &ex.lambdas[0]),
-            crate::apex::ApexKind::Logarithmic => apex[0].c.clone(),
-            crate::apex::ApexKind::Finite => self.finite_apex_limit_of(ex, fit, apex)?,
+            // S ~ -(c/lambda) x^(-lambda) = A (p/x)^lambda
+            wedge::ApexRegime::Power => {
+                let lam = &ex.lambdas[0];
+                -(apex[0].c.clone() / lam) * self.prob.p.clone().powf(&-lam.clone())
+            }
+            // S ~ c ln x + const = -c ln(2 p/x) + const
+            wedge::ApexRegime::Logarithmic => -apex[0].c.clone(),
+            wedge::ApexRegime::Finite => self.finite_apex_limit_of(ex, fit, apex)?,
         })
     }
 
@@ -1110,131 +1121,6 @@ impl<T: CachedRules> GenuineCase<T> {
             });
         }
         Ok(s)
-    }
-
-    /// Above f64: p found in f64 (bracketed search), then polished at the working precision
-    /// by a Newton step with the f64 slope and secant steps, stopping as soon as
-    /// |V(p) - V| is within the solve's own error estimate (or the round-off floor): about
-    /// three solves at the working precision. `None` when the polish leaves the bracket or
-    /// does not settle in eight steps (the caller then searches the whole bracket).
-    fn polish(
-        material: &Material,
-        indenter: &Indenter,
-        v_hat: &T,
-        p_lo: &T,
-        p_hi: &T,
-        opts: &SolveOptions,
-        floor: f64,
-    ) -> Result<Option<Self>> {
-        let opts64 = SolveOptions::for_precision(53);
-        let target = v_hat.to_f64();
-        let g64 = GenuineCase::<f64>::for_speed(
-            material,
-            indenter,
-            target,
-            p_lo.to_f64(),
-            p_hi.to_f64(),
-            opts64.clone(),
-        )?;
-        let p64 = g64.p();
-        let dp = 1e-7 * p64;
-        let slope = (GenuineCase::<f64>::solve(material, indenter, p64 + dp, opts64)?.v_hat()
-            - g64.v_hat())
-            / dp;
-        let f = |p: T| -> Result<(T, GenuineCase<T>)> {
-            let c = GenuineCase::solve(material, indenter, p, opts.clone())?;
-            Ok((c.v_hat() - v_hat, c))
-        };
-        let settled = |fx: &T, c: &GenuineCase<T>| {
-            fx.clone().abs().to_f64() <= (floor * target.abs()).max(c.error_estimate())
-        };
-        complexfn::roots::secant_polish(
-            v_hat.lit(p64),
-            slope,
-            (p_lo.to_f64(), p_hi.to_f64()),
-            8,
-            |x: &T| f(x.clone()),
-            |fx, c| Ok(settled(fx, c)),
-        )
-    }
-
-    /// The contact speed p whose genuine V/(c1 cot Theta) equals `v_hat`, searched in
-    /// [p_lo, p_hi] (inside (0, m_R)) by secant steps safeguarded by bisection, to
-    /// [`roundoff_floor`] of the working precision (the precision of `v_hat`).
-    pub fn for_speed(
-        material: &Material,
-        indenter: &Indenter,
-        v_hat: T,
-        p_lo: T,
-        p_hi: T,
-        opts: SolveOptions,
-    ) -> Result<Self> {
-        let f = |p: T| -> Result<(T, GenuineCase<T>)> {
-            let c = GenuineCase::solve(material, indenter, p, opts.clone())?;
-            Ok((c.v_hat() - &v_hat, c))
-        };
-        let floor = roundoff_floor(v_hat.prec());
-        if v_hat.prec() > 53 {
-            if let Some(c) = Self::polish(material, indenter, &v_hat, &p_lo, &p_hi, &opts, floor)? {
-                return Ok(c);
-            }
-        }
-        let (mut a, mut b) = (p_lo.clone(), p_hi.clone());
-        let (mut fa, _) = f(a.clone())?;
-        let (mut fb, _) = f(b.clone())?;
-        if fa.is_sign_negative() == fb.is_sign_negative() {
-            // the speeds at the bracket's ends, computed afresh (fa + v_hat cancels for a
-            // target far outside)
-            let v_at = |p: &T| -> Result<f64> {
-                Ok(
-                    GenuineCase::solve(material, indenter, p.clone(), opts.clone())?
-                        .v_hat()
-                        .to_f64(),
-                )
-            };
-            let sig = |x: f64| format!("{x:.4e}");
-            return Err(invalid(
-                "indenter speed V/(c1 cot Theta)",
-                sig(v_hat.to_f64()),
-                format!(
-                    "({}, {}), the speeds reached for alpha in (0, c_R)",
-                    sig(v_at(&p_lo)?),
-                    sig(v_at(&p_hi)?)
-                ),
-            ));
-        }
-        for _ in 0..60 {
-            let mut x = b.clone() - fb.clone() * (b.clone() - &a) / (fb.clone() - &fa);
-            let (lo, hi) = if a < b { (&a, &b) } else { (&b, &a) };
-            if !(x > *lo && x < *hi) {
-                x = (a.clone() + &b) / 2.0;
-            }
-            let (fx, cx) = f(x.clone())?;
-            let width = (b.clone() - &a).abs().to_f64();
-            if fx.clone().abs().to_f64() <= floor * v_hat.to_f64().abs() || width < floor * 1e-2 {
-                return Ok(cx);
-            }
-            if fx.is_sign_negative() == fa.is_sign_negative() {
-                a = x;
-                fa = fx.clone();
-            } else {
-                b = x;
-                fb = fx.clone();
-            }
-            // keep the secant well-conditioned: Illinois step
-            if fx.is_sign_negative() == fb.is_sign_negative() {
-                fa *= 0.5;
-            }
-        }
-        Err(GenuineError::NoConvergence {
-            what: "inverse p(V)",
-            detail: format!(
-                "no root for v_hat = {} in [{}, {}]",
-                v_hat.to_f64(),
-                p_lo.to_f64(),
-                p_hi.to_f64()
-            ),
-        })
     }
 }
 

@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use complexfn::{Cx, Real};
 use genuine::kernels::{point_load, uniform_load, ContourDisplacement, Lamb};
-use genuine::{GenuineCase, SolveOptions};
+use genuine::{GenuineCase, GenuineSolver, SolveOptions};
 use rug::Float;
 use wedge::{Case, Coupling, Indenter, Material, Solution};
 
@@ -272,14 +272,15 @@ fn inverse_at_96_bits_is_polished_from_f64() {
     let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
     let bits = 96;
     let opts = SolveOptions::for_precision(bits);
-    let m_r = 0.4957226315464773;
     // the V of p = 0.3 as the target
     let target = GenuineCase::solve(&mat, &ind, Float::with_val(bits, 0.3), opts.clone())
         .unwrap()
         .v_hat();
-    let lo = Float::with_val(bits, m_r * 1e-6);
-    let hi = Float::with_val(bits, m_r * (1.0 - 1e-6));
-    let g = GenuineCase::for_speed(&mat, &ind, target.clone(), lo, hi, opts).unwrap();
+    let like = Float::with_val(bits, 0);
+    let speed = target.clone() * mat.c1().to_real(&like) * ind.cot_theta(&like);
+    let speed = wedge::Param::parse("speed", &speed.to_string_radix(10, Some(60))).unwrap();
+    let solver = GenuineSolver::with_options(&mat, &ind, opts);
+    let g = wedge::for_speed(&solver, &speed, &like).unwrap();
     let miss = Float::with_val(bits, g.v_hat() - &target).abs().to_f64();
     assert!(
         miss <= g.error_estimate().max(1e-27),

@@ -120,18 +120,7 @@ impl<T: CachedRules> Case<T> {
         like: &T,
         solution: Solution,
     ) -> Result<Self> {
-        let alpha = alpha.into();
-        let c_r = complexfn::Rayleigh::new(material.m(&0.0_f64))?.m_r() * material.c1().value();
-        let av = alpha.value();
-        if !(av.is_finite() && av > 0.0 && av < c_r) {
-            return Err(invalid(
-                "alpha",
-                format!("{} m/s", alpha.text()),
-                format!("(0, c_R) = (0, {c_r:.6}) m/s"),
-            ));
-        }
-        let a = alpha.to_real(like);
-        let p = a / material.c1().to_real(like);
+        let p = material.p_of_alpha(&alpha.into(), like)?;
         Case::new(material, indenter, p, solution)
     }
 }

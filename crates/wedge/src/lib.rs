@@ -22,11 +22,14 @@ pub mod matching;
 pub mod omega;
 pub mod params;
 pub mod regime;
+pub mod solved;
 pub mod stress;
 
 pub use admissibility::Admissibility;
 pub use case::Case;
 pub use error::{Result, WedgeError};
-pub use inverse::case_for_speed;
+pub use inverse::{case_for_speed, for_speed};
 pub use params::{Coupling, Indenter, Material, Param, Solution};
 pub use regime::{Apex, ApexRegime};
+pub use solved::{ApexLeading, ContactSolution, PaperSolver, Solver, PAPER_ONLY};
+pub use stress::WithError;

@@ -128,6 +128,22 @@ impl Material {
     pub fn c2(&self) -> &Param {
         &self.c2
     }
+    /// p = alpha/c1 at the precision of `like` for a contact-zone speed `alpha` (m/s, decimal
+    /// text parsed at that precision): the one check of the admissible range 0 < alpha < c_R
+    /// (decided in f64; the construction at the working precision checks p < m_R again).
+    pub fn p_of_alpha<T: Real>(&self, alpha: &Param, like: &T) -> Result<T> {
+        let c_r = complexfn::Rayleigh::new(self.m(&0.0_f64))?.m_r() * self.c1.value;
+        let av = alpha.value;
+        if !(av.is_finite() && av > 0.0 && av < c_r) {
+            return Err(invalid(
+                "alpha",
+                format!("{} m/s", alpha.text()),
+                format!("(0, c_R) = (0, {c_r:.6}) m/s"),
+            ));
+        }
+        Ok(alpha.to_real(like) / self.c1.to_real(like))
+    }
+
     /// m = c2/c1 at the precision of `like`.
     pub fn m<T: Real>(&self, like: &T) -> T {
         self.c2.to_real(like) / self.c1.to_real(like)
@@ -235,6 +251,14 @@ pub enum Solution {
 }
 
 impl Solution {
+    /// Whether a high-precision solve of this variant is confirmed by a second solve at 32
+    /// more bits: the paper's construction (`paper`, `as-printed`), whose estimates are the
+    /// quadratures' own; not the genuine solution, whose estimates come from its basis sizes
+    /// (a second solve would double the cost of its dominant part without a better bound).
+    pub fn checked_at_two_precisions(self) -> bool {
+        self != Solution::Genuine
+    }
+
     /// The name used in outputs and on the command line.
     pub fn name(self) -> &'static str {
         match self {

@@ -1,0 +1,214 @@
+//! What the command-line programs share: parsing of list and range arguments, and the
+//! serialisation of the library's typed reports (JSON objects, CSV rows, tables). Each
+//! program uses a part of it.
+#![allow(dead_code)]
+// `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use dyncontact::{
+    CaseInput, FieldReport, Item, SolveReport, StressReport, ESTIMATED_KEYS, FIELD_KEYS, SOLVE_KEYS,
+};
+use rug::Float;
+use serde_json::{Map, Number, Value};
+use wedge::{Coupling, Result, WedgeError};
+
+/// A JSON number with exactly the digits given (arbitrary precision).
+pub fn num(s: &str) -> Value {
+    match s.parse::<Number>() {
+        Ok(n) => Value::Number(n),
+        Err(_) => Value::Null,
+    }
+}
+
+/// An f64 (an error estimate) as a JSON number.
+pub fn ratio(x: f64) -> Value {
+    num(&format!("{x:e}"))
+}
+
+fn item(it: &Item) -> Value {
+    match it {
+        Item::Number(q) => num(q.text()),
+        Item::Name(s) => Value::String((*s).into()),
+        Item::Flag(b) => Value::Bool(*b),
+        Item::Ratio(x) => ratio(*x),
+        Item::Count(n) => Value::Number((*n).into()),
+        Item::Unavailable(_) => Value::Null,
+    }
+}
+
+fn inputs(o: &mut Map<String, Value>, input: &CaseInput) {
+    o.insert("c1".into(), num(input.material.c1().text()));
+    o.insert("c2".into(), num(input.material.c2().text()));
+    o.insert("theta_deg".into(), num(input.indenter.theta_deg().text()));
+    o.insert("gamma".into(), num(input.indenter.gamma().text()));
+    let coupling = match input.indenter.coupling() {
+        Coupling::On => "on",
+        Coupling::Off => "off",
+    };
+    o.insert("coupling".into(), Value::String(coupling.into()));
+}
+
+/// A `solve` report as a JSON object: the keys of [`SOLVE_KEYS`] (null where unavailable),
+/// `error_estimates` (absolute, per quantity), `unavailable` (the reasons, when any) and the
+/// case's inputs.
+pub fn solve_json(r: &SolveReport) -> Value {
+    let mut o = Map::new();
+    let items = r.items();
+    for (k, it) in &items {
+        o.insert((*k).into(), item(it));
+    }
+    let est: Map<String, Value> = r
+        .quantities()
+        .into_iter()
+        .map(|(k, q)| (k.to_string(), ratio(q.error())))
+        .collect();
+    o.insert("error_estimates".into(), Value::Object(est));
+    let why: Map<String, Value> = r
+        .unavailable()
+        .into_iter()
+        .map(|(k, reason)| (k.to_string(), Value::String(reason.into())))
+        .collect();
+    if !why.is_empty() {
+        o.insert("unavailable".into(), Value::Object(why));
+    }
+    inputs(&mut o, &r.input);
+    Value::Object(o)
+}
+
+/// The CSV header of `curve`: the [`SOLVE_KEYS`], then `err_<key>` for [`ESTIMATED_KEYS`].
+pub fn solve_csv_header() -> String {
+    SOLVE_KEYS
+        .iter()
+        .map(|k| k.to_string())
+        .chain(ESTIMATED_KEYS.iter().map(|k| format!("err_{k}")))
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// One CSV row of `curve` (empty cells where unavailable).
+pub fn solve_csv_row(r: &SolveReport) -> String {
+    let cell = |v: Value| match v {
+        Value::String(s) => s,
+        Value::Null => String::new(),
+        v => v.to_string(),
+    };
+    let values = r.items().into_iter().map(|(_, it)| cell(item(&it)));
+    let errs = ESTIMATED_KEYS.iter().map(|k| match r.quantity(k) {
+        Some(q) => cell(ratio(q.error())),
+        None => String::new(),
+    });
+    values.chain(errs).collect::<Vec<_>>().join(",")
+}
+
+/// A `stress` report as a JSON object.
+pub fn stress_json(r: &StressReport) -> Value {
+    let mut m = Map::new();
+    m.insert("solution".into(), Value::String(r.solution.name().into()));
+    m.insert(
+        "r_over_alpha_t".into(),
+        Value::Array(r.r_over_alpha_t.iter().map(|x| num(x.text())).collect()),
+    );
+    m.insert(
+        "sigma_over_mu_cot_theta".into(),
+        Value::Array(
+            r.sigma_over_mu_cot_theta
+                .iter()
+                .map(|q| num(q.text()))
+                .collect(),
+        ),
+    );
+    m.insert(
+        "sigma_error_estimates".into(),
+        Value::Array(
+            r.sigma_over_mu_cot_theta
+                .iter()
+                .map(|q| ratio(q.error()))
+                .collect(),
+        ),
+    );
+    m.insert("error_estimate".into(), ratio(r.error_estimate));
+    m.insert("digits".into(), Value::Number(r.digits.into()));
+    Value::Object(m)
+}
+
+/// A `field` report as a JSON object: an array over the points for each of [`FIELD_KEYS`].
+pub fn field_json(r: &FieldReport) -> Value {
+    let mut o = Map::new();
+    o.insert("solution".into(), Value::String(r.solution.name().into()));
+    for (i, k) in FIELD_KEYS.iter().enumerate() {
+        let col = r.points.iter().map(|pt| num(&pt[i])).collect();
+        o.insert((*k).into(), Value::Array(col));
+    }
+    o.insert("digits".into(), Value::Number(r.digits.into()));
+    Value::Object(o)
+}
+
+/// Parse points "x:y,x:y" (x/(c1 t), y/(c1 t)) into pairs; `name` goes into the error.
+pub fn parse_points(name: &'static str, s: &str) -> Result<Vec<(wedge::Param, wedge::Param)>> {
+    let bad = || WedgeError::InvalidParameter {
+        name,
+        value: s.to_string(),
+        range: "comma-separated x:y pairs (x/(c1 t), y/(c1 t)) with y < 0 and x^2 + y^2 < 1".into(),
+    };
+    s.split(',')
+        .map(|t| {
+            let (a, b) = t.split_once(':').ok_or_else(bad)?;
+            let x = wedge::Param::parse(name, a).map_err(|_| bad())?;
+            let y = wedge::Param::parse(name, b).map_err(|_| bad())?;
+            if !(y.value() < 0.0) {
+                return Err(bad());
+            }
+            Ok((x, y))
+        })
+        .collect()
+}
+
+/// Parse "a,b,c" into decimal parameters (kept as text for arbitrary precision).
+pub fn parse_params(name: &'static str, s: &str) -> Result<Vec<wedge::Param>> {
+    s.split(',').map(|t| wedge::Param::parse(name, t)).collect()
+}
+
+/// Parse a range "min,max,steps" (steps >= 2, min < max).
+pub fn parse_range(name: &'static str, s: &str) -> Result<(wedge::Param, wedge::Param, usize)> {
+    let bad = || WedgeError::InvalidParameter {
+        name,
+        value: s.to_string(),
+        range: "min,max,steps with min < max and an integer steps >= 2".into(),
+    };
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(bad());
+    }
+    let (lo, hi) = (
+        wedge::Param::parse(name, parts[0])?,
+        wedge::Param::parse(name, parts[1])?,
+    );
+    let n: f64 = parts[2].parse().map_err(|_| bad())?;
+    if !(lo.value() < hi.value()) || n < 2.0 || n.fract() != 0.0 || n > 1e6 {
+        return Err(bad());
+    }
+    Ok((lo, hi, n as usize))
+}
+
+/// `n` evenly spaced values from `lo` to `hi` (decimal texts), spaced at `bits` of precision
+/// (at least 128) and kept as decimal text with the digits of that precision plus ten: each
+/// grid point is parsed at the working precision exactly as the spacing computed it.
+pub fn linspace(lo: &wedge::Param, hi: &wedge::Param, n: usize, bits: u32) -> Vec<wedge::Param> {
+    let bits = bits.max(128) + 32;
+    let like = Float::with_val(bits, 0);
+    let (a, b): (Float, Float) = (lo.to_real(&like), hi.to_real(&like));
+    let digits = (bits as f64 * std::f64::consts::LOG10_2).ceil() as usize + 10;
+    (0..n)
+        .map(|i| {
+            if i == 0 {
+                return lo.clone();
+            }
+            if i + 1 == n {
+                return hi.clone();
+            }
+            let x = Float::with_val(bits, &b - &a) * (i as u32) / ((n - 1) as u32) + &a;
+            let text = x.to_string_radix(10, Some(digits));
+            wedge::Param::parse("alpha", &text).unwrap_or_else(|_| x.to_f64().into())
+        })
+        .collect()
+}

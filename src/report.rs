@@ -1,0 +1,643 @@
+//! Typed reports of solved cases: what `solve`, `curve`, `stress` and `field` compute, as
+//! values the library returns; serialisation (JSON, CSV, tables) happens in the command
+//! line alone.
+//!
+//! Every number is a [`Quantity`]: its decimal text at the digits asked for and its own
+//! absolute error estimate, never optimistic (checked against solves at twice the
+//! precision in `tests/error_estimates.rs`). A quantity a case may lack is an [`Entry`]: a
+//! value, or the reason it is unavailable. A required quantity that cannot be computed is an
+//! error naming it: no report carries a non-finite number.
+
+use complexfn::Real;
+use rug::Float;
+use wedge::{ApexRegime, ContactSolution, Result, Solution, WedgeError, WithError};
+
+use crate::CaseInput;
+
+/// A reported number: the decimal text of its value (the digits printed) and its absolute
+/// error estimate, in the quantity's own units.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Quantity {
+    text: String,
+    error: f64,
+}
+
+impl Quantity {
+    /// `x` printed to `digits` significant digits, with the estimate `error` (at least
+    /// `floor` |x|, the print floor); an error naming `key` when either is not finite.
+    fn new<T: Real>(key: &str, x: &T, error: f64, floor: f64, digits: usize) -> Result<Self> {
+        if !(x.is_finite() && error.is_finite()) {
+            return Err(not_finite(key));
+        }
+        Ok(Quantity {
+            text: x.to_decimal(digits),
+            error: error.max(floor * x.to_f64().abs()),
+        })
+    }
+    /// The value as decimal text, with the digits of the report.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+    /// The value rounded to f64 (use [`Self::text`] or [`Self::to_float`] for the digits
+    /// beyond).
+    pub fn value(&self) -> f64 {
+        self.text.parse().unwrap_or(f64::NAN)
+    }
+    /// The value at `bits` of precision (exactly the printed digits, rounded to `bits`).
+    pub fn to_float(&self, bits: u32) -> Float {
+        match Float::parse(&self.text) {
+            Ok(x) => Float::with_val(bits, x),
+            Err(_) => Float::with_val(bits, f64::NAN),
+        }
+    }
+    /// The absolute error estimate.
+    pub fn error(&self) -> f64 {
+        self.error
+    }
+    /// The same quantity printed to `digits` digits (its estimate kept, at least `floor`
+    /// |value|).
+    fn rounded(&self, digits: usize, floor: f64) -> Quantity {
+        let x = self.to_float(4096);
+        Quantity {
+            text: x.to_decimal(digits),
+            error: self.error.max(floor * self.value().abs()),
+        }
+    }
+}
+
+fn not_finite(key: &str) -> WedgeError {
+    WedgeError::NoConvergence {
+        what: format!("{key} (not finite at this precision)"),
+        reached: f64::INFINITY,
+        asked: 0.0,
+    }
+}
+
+/// A quantity that a case may lack: its value, or the reason it is unavailable.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Entry<V> {
+    /// The value.
+    Value(V),
+    /// Why there is no value.
+    Unavailable(String),
+}
+
+impl<V> Entry<V> {
+    /// The value, if available.
+    pub fn value(&self) -> Option<&V> {
+        match self {
+            Entry::Value(v) => Some(v),
+            Entry::Unavailable(_) => None,
+        }
+    }
+    /// The reason, if unavailable.
+    pub fn reason(&self) -> Option<&str> {
+        match self {
+            Entry::Value(_) => None,
+            Entry::Unavailable(r) => Some(r),
+        }
+    }
+}
+
+/// One entry of a report, as the command line serialises it.
+#[derive(Clone, Copy, Debug)]
+pub enum Item<'a> {
+    /// A number with its estimate.
+    Number(&'a Quantity),
+    /// A name (solution variant, apex regime).
+    Name(&'static str),
+    /// A yes/no check.
+    Flag(bool),
+    /// A relative error estimate.
+    Ratio(f64),
+    /// A count (the digits printed).
+    Count(usize),
+    /// Unavailable, with the reason.
+    Unavailable(&'a str),
+}
+
+impl<'a> From<&'a Entry<Quantity>> for Item<'a> {
+    fn from(e: &'a Entry<Quantity>) -> Self {
+        match e {
+            Entry::Value(q) => Item::Number(q),
+            Entry::Unavailable(r) => Item::Unavailable(r),
+        }
+    }
+}
+
+impl<'a> From<&'a Entry<bool>> for Item<'a> {
+    fn from(e: &'a Entry<bool>) -> Self {
+        match e {
+            Entry::Value(b) => Item::Flag(*b),
+            Entry::Unavailable(r) => Item::Unavailable(r),
+        }
+    }
+}
+
+/// The keys of a `solve` report, in order (also the CSV columns of `curve`); the field of
+/// [`SolveReport`] of the same name holds each.
+pub const SOLVE_KEYS: &[&str] = &[
+    "solution",
+    "alpha",
+    "speed",
+    "p",
+    "m",
+    "m_r",
+    "omega0",
+    "s0",
+    "regime",
+    "apex_exponent",
+    "apex_amplitude_over_mu_cot_theta",
+    "q_over_c1sq_cot_theta",
+    "v_over_c1_cot_theta",
+    "force_over_a_mu_cot_theta",
+    "edge_slip_velocity_over_speed",
+    "edge_following_rate_over_speed",
+    "apex_u_r_over_speed_t",
+    "slip_direction_ok",
+    "contact_compressive",
+    "no_interpenetration",
+    "error_estimate",
+    "digits",
+];
+
+/// The numeric quantities of a report, each with its own error estimate (in a CSV the
+/// columns `err_<key>`, after the [`SOLVE_KEYS`]).
+pub const ESTIMATED_KEYS: &[&str] = &[
+    "alpha",
+    "speed",
+    "p",
+    "m",
+    "m_r",
+    "omega0",
+    "s0",
+    "apex_exponent",
+    "apex_amplitude_over_mu_cot_theta",
+    "q_over_c1sq_cot_theta",
+    "v_over_c1_cot_theta",
+    "force_over_a_mu_cot_theta",
+    "edge_slip_velocity_over_speed",
+    "edge_following_rate_over_speed",
+    "apex_u_r_over_speed_t",
+];
+
+/// The reason given for the admissibility checks of curve rows.
+pub const NOT_FOR_CURVE_ROWS: &str =
+    "not computed for curve rows (the sign checks of `solve` sample the contact)";
+
+/// The report of one solved case (`wedge solve`, a row of `wedge curve`): every quantity
+/// dimensionless, the field names are the report keys ([`SOLVE_KEYS`]).
+#[derive(Clone, Debug)]
+pub struct SolveReport {
+    /// The case's inputs (material, indenter, solution variant, digits asked for).
+    pub input: CaseInput,
+    /// Contact-zone speed alpha, m/s.
+    pub alpha: Quantity,
+    /// Indenter speed V, m/s.
+    pub speed: Quantity,
+    /// p = alpha/c1.
+    pub p: Quantity,
+    /// m = c2/c1.
+    pub m: Quantity,
+    /// m_R = c_R/c1.
+    pub m_r: Quantity,
+    /// Omega0, eq (31) (the paper's construction).
+    pub omega0: Entry<Quantity>,
+    /// S0, eq (44) (the paper's construction).
+    pub s0: Entry<Quantity>,
+    /// The apex regime.
+    pub regime: ApexRegime,
+    /// lambda of sigma ~ (p/x)^lambda at the apex (0 for a finite or logarithmic apex).
+    pub apex_exponent: Entry<Quantity>,
+    /// The amplitude of the leading apex term over mu cot Theta ([`wedge::solved`]).
+    pub apex_amplitude_over_mu_cot_theta: Entry<Quantity>,
+    /// Q/(c1^2 cot Theta), eq (53b) (the paper's construction).
+    pub q_over_c1sq_cot_theta: Entry<Quantity>,
+    /// V/(c1 cot Theta).
+    pub v_over_c1_cot_theta: Quantity,
+    /// P/(alpha t mu cot Theta), eq (47).
+    pub force_over_a_mu_cot_theta: Quantity,
+    /// du_r/dt at the contact edge over V (the paper's construction).
+    pub edge_slip_velocity_over_speed: Entry<Quantity>,
+    /// The rate of u_r following the edge over V (the paper's construction).
+    pub edge_following_rate_over_speed: Entry<Quantity>,
+    /// u_r(0+, t)/(V t), the apex dislocation (the paper's construction).
+    pub apex_u_r_over_speed_t: Entry<Quantity>,
+    /// The slip direction (8) holds on the contact.
+    pub slip_direction_ok: Entry<bool>,
+    /// The contact stress is compressive.
+    pub contact_compressive: Entry<bool>,
+    /// No interpenetration outside the contact.
+    pub no_interpenetration: Entry<bool>,
+    /// The relative error estimate of V (the solve's summary accuracy).
+    pub error_estimate: f64,
+    /// Significant digits printed.
+    pub digits: usize,
+}
+
+impl SolveReport {
+    /// The solution variant.
+    pub fn solution(&self) -> Solution {
+        self.input.solution
+    }
+
+    /// Every entry in [`SOLVE_KEYS`] order.
+    pub fn items(&self) -> Vec<(&'static str, Item<'_>)> {
+        fn q<'a>(k: &'static str, x: &'a Quantity) -> (&'static str, Item<'a>) {
+            (k, Item::Number(x))
+        }
+        vec![
+            ("solution", Item::Name(self.solution().name())),
+            q("alpha", &self.alpha),
+            q("speed", &self.speed),
+            q("p", &self.p),
+            q("m", &self.m),
+            q("m_r", &self.m_r),
+            ("omega0", (&self.omega0).into()),
+            ("s0", (&self.s0).into()),
+            ("regime", Item::Name(self.regime.name())),
+            ("apex_exponent", (&self.apex_exponent).into()),
+            (
+                "apex_amplitude_over_mu_cot_theta",
+                (&self.apex_amplitude_over_mu_cot_theta).into(),
+            ),
+            (
+                "q_over_c1sq_cot_theta",
+                (&self.q_over_c1sq_cot_theta).into(),
+            ),
+            q("v_over_c1_cot_theta", &self.v_over_c1_cot_theta),
+            q("force_over_a_mu_cot_theta", &self.force_over_a_mu_cot_theta),
+            (
+                "edge_slip_velocity_over_speed",
+                (&self.edge_slip_velocity_over_speed).into(),
+            ),
+            (
+                "edge_following_rate_over_speed",
+                (&self.edge_following_rate_over_speed).into(),
+            ),
+            (
+                "apex_u_r_over_speed_t",
+                (&self.apex_u_r_over_speed_t).into(),
+            ),
+            ("slip_direction_ok", (&self.slip_direction_ok).into()),
+            ("contact_compressive", (&self.contact_compressive).into()),
+            ("no_interpenetration", (&self.no_interpenetration).into()),
+            ("error_estimate", Item::Ratio(self.error_estimate)),
+            ("digits", Item::Count(self.digits)),
+        ]
+    }
+
+    /// The numeric quantities present, with their keys ([`ESTIMATED_KEYS`] order).
+    pub fn quantities(&self) -> Vec<(&'static str, &Quantity)> {
+        self.items()
+            .into_iter()
+            .filter_map(|(k, it)| match it {
+                Item::Number(q) => Some((k, q)),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// The quantity of `key`, if the report holds it.
+    pub fn quantity(&self, key: &str) -> Option<&Quantity> {
+        self.quantities()
+            .into_iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, q)| q)
+    }
+
+    /// Every numeric quantity present, mutable (required ones first).
+    fn quantities_mut(&mut self) -> Vec<(&'static str, &mut Quantity)> {
+        let mut out: Vec<(&'static str, &mut Quantity)> = vec![
+            ("alpha", &mut self.alpha),
+            ("speed", &mut self.speed),
+            ("p", &mut self.p),
+            ("m", &mut self.m),
+            ("m_r", &mut self.m_r),
+            ("v_over_c1_cot_theta", &mut self.v_over_c1_cot_theta),
+            (
+                "force_over_a_mu_cot_theta",
+                &mut self.force_over_a_mu_cot_theta,
+            ),
+        ];
+        for (k, e) in [
+            ("omega0", &mut self.omega0),
+            ("s0", &mut self.s0),
+            ("apex_exponent", &mut self.apex_exponent),
+            (
+                "apex_amplitude_over_mu_cot_theta",
+                &mut self.apex_amplitude_over_mu_cot_theta,
+            ),
+            ("q_over_c1sq_cot_theta", &mut self.q_over_c1sq_cot_theta),
+            (
+                "edge_slip_velocity_over_speed",
+                &mut self.edge_slip_velocity_over_speed,
+            ),
+            (
+                "edge_following_rate_over_speed",
+                &mut self.edge_following_rate_over_speed,
+            ),
+            ("apex_u_r_over_speed_t", &mut self.apex_u_r_over_speed_t),
+        ] {
+            if let Entry::Value(q) = e {
+                out.push((k, q));
+            }
+        }
+        out
+    }
+
+    /// The quantities not available, with the reasons.
+    pub fn unavailable(&self) -> Vec<(&'static str, &str)> {
+        self.items()
+            .into_iter()
+            .filter_map(|(k, it)| match it {
+                Item::Unavailable(r) => Some((k, r)),
+                _ => None,
+            })
+            .collect()
+    }
+}
+
+/// The relative error floor of a value printed to `digits` significant digits and computed
+/// at `bits` bits: half a unit in the last printed digit, or 8 units of round-off.
+pub fn print_floor(digits: usize, bits: u32) -> f64 {
+    (0.5 * 10f64.powi(1 - digits as i32)).max(8.0 * 2f64.powi(-(bits as i32)))
+}
+
+/// An optional quantity, or the reason it is unavailable (its error, a value that is not
+/// finite, or an estimate that is not).
+fn entry<T: Real>(r: Result<WithError<T>>, floor: f64, digits: usize) -> Entry<Quantity> {
+    match r {
+        Err(e) => Entry::Unavailable(e.to_string()),
+        Ok(w) if !w.value.is_finite() => Entry::Unavailable("not finite at this precision".into()),
+        Ok(w) if !w.error.is_finite() => {
+            Entry::Unavailable("no error estimate at this precision".into())
+        }
+        Ok(w) => match Quantity::new("", &w.value, w.error, floor, digits) {
+            Ok(q) => Entry::Value(q),
+            Err(e) => Entry::Unavailable(e.to_string()),
+        },
+    }
+}
+
+impl SolveReport {
+    /// The report of the solved case `s` of `input`, printed to `digits` digits, without the
+    /// admissibility checks ([`NOT_FOR_CURVE_ROWS`]; see [`Self::set_admissibility`]).
+    pub fn of<T, S>(s: &S, input: &CaseInput, digits: usize) -> Result<Self>
+    where
+        T: complexfn::quadrature::CachedRules,
+        S: ContactSolution<T> + ?Sized,
+    {
+        let p = s.p();
+        let floor = print_floor(digits, p.prec());
+        let c1 = input.material.c1().to_real(&p);
+        let cot = input.indenter.cot_theta(&p);
+        let exact = |key: &str, x: &T| Quantity::new(key, x, 0.0, floor, digits);
+        let v = s.v_hat()?;
+        let force = s.force_hat()?;
+        let speed_scale = (c1.clone() * &cot).to_f64().abs();
+        let speed = v.value.clone() * &c1 * &cot;
+        let (regime, apex_exponent, apex_amplitude) = match s.apex_leading() {
+            Ok(a) => (
+                a.regime,
+                entry(
+                    Ok(WithError {
+                        value: a.exponent,
+                        error: 0.0,
+                    }),
+                    floor,
+                    digits,
+                ),
+                entry(Ok(a.amplitude), floor, digits),
+            ),
+            Err(e) => {
+                let why = format!("apex expansion: {e}");
+                (
+                    s.regime(),
+                    Entry::Unavailable(why.clone()),
+                    Entry::Unavailable(why),
+                )
+            }
+        };
+        let error_estimate = s.rel_error()?;
+        if !error_estimate.is_finite() {
+            return Err(not_finite("error_estimate"));
+        }
+        let ray = s.rayleigh();
+        let not_here = || Entry::Unavailable(NOT_FOR_CURVE_ROWS.to_string());
+        Ok(SolveReport {
+            input: input.clone(),
+            alpha: exact("alpha", &(p.clone() * &c1))?,
+            speed: Quantity::new("speed", &speed, v.error * speed_scale, floor, digits)?,
+            p: exact("p", &p)?,
+            m: exact("m", ray.m())?,
+            m_r: exact("m_r", ray.m_r())?,
+            omega0: entry(s.omega0(), floor, digits),
+            s0: entry(s.s0(), floor, digits),
+            regime,
+            apex_exponent,
+            apex_amplitude_over_mu_cot_theta: apex_amplitude,
+            q_over_c1sq_cot_theta: entry(s.q_hat(), floor, digits),
+            v_over_c1_cot_theta: Quantity::new(
+                "v_over_c1_cot_theta",
+                &v.value,
+                v.error,
+                floor,
+                digits,
+            )?,
+            force_over_a_mu_cot_theta: Quantity::new(
+                "force_over_a_mu_cot_theta",
+                &force.value,
+                force.error,
+                floor,
+                digits,
+            )?,
+            edge_slip_velocity_over_speed: entry(s.edge_slip_velocity_over_speed(), floor, digits),
+            edge_following_rate_over_speed: entry(
+                s.edge_following_rate_over_speed(),
+                floor,
+                digits,
+            ),
+            apex_u_r_over_speed_t: entry(s.apex_u_r_over_speed_t(), floor, digits),
+            slip_direction_ok: not_here(),
+            contact_compressive: not_here(),
+            no_interpenetration: not_here(),
+            error_estimate,
+            digits,
+        })
+    }
+
+    /// Sets the three admissibility flags, or declares them unavailable with the reason.
+    pub fn set_admissibility(&mut self, checks: Result<wedge::Admissibility>) {
+        match checks {
+            Ok(a) => {
+                self.slip_direction_ok = Entry::Value(a.slip_direction_ok);
+                self.contact_compressive = Entry::Value(a.contact_compressive);
+                self.no_interpenetration = Entry::Value(a.no_interpenetration);
+            }
+            Err(e) => {
+                let why = format!("admissibility checks: {e}");
+                self.slip_direction_ok = Entry::Unavailable(why.clone());
+                self.contact_compressive = Entry::Unavailable(why.clone());
+                self.no_interpenetration = Entry::Unavailable(why);
+            }
+        }
+    }
+
+    /// Checks this report (solved at the higher precision) against `lower`, the same case
+    /// at fewer bits: every estimate becomes at least the difference between the two, and
+    /// the summary estimate at least V's relative estimate.
+    pub(crate) fn check_against(&mut self, lower: &SolveReport) {
+        for (k, q) in self.quantities_mut() {
+            if let Some(x) = lower.quantity(k) {
+                let diff = (q.to_float(4096) - x.to_float(4096)).abs().to_f64();
+                q.error = q.error.max(diff);
+            }
+        }
+        self.summarise();
+    }
+
+    /// The summary estimate: at least V's own relative estimate.
+    fn summarise(&mut self) {
+        let v = &self.v_over_c1_cot_theta;
+        if v.value() != 0.0 {
+            self.error_estimate = self.error_estimate.max(v.error / v.value().abs());
+        }
+    }
+
+    /// The report printed to `digits` digits, every estimate at least the print floor
+    /// `floor` |value|.
+    pub(crate) fn rounded(mut self, digits: usize, floor: f64) -> Self {
+        for (_, q) in self.quantities_mut() {
+            *q = q.rounded(digits, floor);
+        }
+        self.digits = digits;
+        self
+    }
+
+    /// Adds `extra(key)` to the estimate of each quantity (the uncertainty of an input
+    /// carried through the quantity's slope).
+    pub(crate) fn widen(&mut self, extra: impl Fn(&str) -> f64) {
+        for (k, q) in self.quantities_mut() {
+            q.error += extra(k);
+        }
+        self.summarise();
+    }
+}
+
+/// The contact stress of a case at fractions r/(alpha t) of the contact (`wedge stress`).
+#[derive(Clone, Debug)]
+pub struct StressReport {
+    /// The solution variant.
+    pub solution: Solution,
+    /// The fractions r/(alpha t), as given.
+    pub r_over_alpha_t: Vec<wedge::Param>,
+    /// sigma_theta/(mu cot Theta) at each fraction, with its estimate.
+    pub sigma_over_mu_cot_theta: Vec<Quantity>,
+    /// The largest relative estimate over the points.
+    pub error_estimate: f64,
+    /// Significant digits printed.
+    pub digits: usize,
+}
+
+impl StressReport {
+    /// The stress of the solved case `s` at the fractions `at` (each in (0, 1]).
+    pub fn of<T, S>(s: &S, at: &[wedge::Param], digits: usize) -> Result<Self>
+    where
+        T: complexfn::quadrature::CachedRules,
+        S: ContactSolution<T> + ?Sized,
+    {
+        let p = s.p();
+        let floor = print_floor(digits, p.prec());
+        let mut out = Vec::with_capacity(at.len());
+        let mut worst = 0.0_f64;
+        for fp in at {
+            let f = fp.value();
+            if !(f > 0.0 && f <= 1.0) {
+                return Err(WedgeError::InvalidParameter {
+                    name: "at",
+                    value: fp.text().to_string(),
+                    range: "(0, 1] (fractions r/(alpha t) of the contact half-width)".into(),
+                });
+            }
+            let x = p.clone() * fp.to_real(&p);
+            let x = if x > p { p.clone() } else { x };
+            let point = |e: WedgeError| WedgeError::AtCase {
+                inputs: format!("the contact stress at r/(alpha t) = {}", fp.text()),
+                error: Box::new(e),
+            };
+            let w = s.stress_hat(&x).map_err(point)?;
+            let q = Quantity::new("the contact stress", &w.value, w.error, floor, digits)
+                .map_err(point)?;
+            worst = worst.max(q.error / q.value().abs().max(1e-300));
+            out.push(q);
+        }
+        Ok(StressReport {
+            solution: s.solution(),
+            r_over_alpha_t: at.to_vec(),
+            sigma_over_mu_cot_theta: out,
+            error_estimate: worst,
+            digits,
+        })
+    }
+}
+
+/// Keys of the `field` report, in order (arrays over the points).
+pub const FIELD_KEYS: &[&str] = &[
+    "x_over_c1_t",
+    "y_over_c1_t",
+    "sigma_xx_over_mu_cot_theta",
+    "sigma_yy_over_mu_cot_theta",
+    "sigma_xy_over_mu_cot_theta",
+    "v_x_over_c1_cot_theta",
+    "v_y_over_c1_cot_theta",
+    "u_x_over_c1_t_cot_theta",
+    "u_y_over_c1_t_cot_theta",
+];
+
+/// The field inside the half-plane at points (x/(c1 t), y/(c1 t)) (`wedge field`): for each
+/// point the values of [`FIELD_KEYS`] as decimal text.
+#[derive(Clone, Debug)]
+pub struct FieldReport {
+    /// The solution variant (the paper's construction).
+    pub solution: Solution,
+    /// Per point, the values in [`FIELD_KEYS`] order.
+    pub points: Vec<[String; 9]>,
+    /// Significant digits printed.
+    pub digits: usize,
+}
+
+impl FieldReport {
+    /// The field of the paper's construction `case` at the points `pts` (y < 0), from the
+    /// homogeneous-function crate (eqs (10)-(12) with (16)); Cartesian components, y out of
+    /// the body. Points ahead of the P front (x^2 + y^2 >= 1) are at rest and give zeros.
+    pub fn of<T: complexfn::quadrature::CachedRules>(
+        case: &wedge::Case<T>,
+        pts: &[(wedge::Param, wedge::Param)],
+        digits: usize,
+    ) -> Result<Self> {
+        let pot = case.potentials()?;
+        let mut points = Vec::with_capacity(pts.len());
+        for (x, y) in pts {
+            let (xt, yt) = (x.to_real(case.p()), y.to_real(case.p()));
+            let fv = homogeneous::field::at(&pot, &xt, &yt).map_err(|e| {
+                WedgeError::InvalidParameter {
+                    name: "at",
+                    value: format!("{}:{}", x.text(), y.text()),
+                    range: format!("a point of the half-plane y < 0 ({e})"),
+                }
+            })?;
+            let c = fv.cartesian();
+            let vals = [xt, yt, c.sxx, c.syy, c.sxy, c.vx, c.vy, c.ux, c.uy];
+            if let Some(k) = vals.iter().position(|v| !v.is_finite()) {
+                return Err(not_finite(FIELD_KEYS[k]));
+            }
+            points.push(vals.map(|v| v.to_decimal(digits)));
+        }
+        Ok(FieldReport {
+            solution: case.solution(),
+            points,
+            digits,
+        })
+    }
+}
