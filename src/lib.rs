@@ -142,22 +142,23 @@ fn at_precision<R>(input: &CaseInput, job: &impl Job<R>) -> Result<R> {
     }
 }
 
-/// The case's inputs in one line, for error messages.
+/// The case's inputs in one line, for error messages (numbers to 7 significant digits).
 pub fn describe(input: &CaseInput, speed: &Speed) -> String {
     let speed = match speed {
         Speed::Alpha(a) => format!("alpha = {} m/s", lamb::error::short(a.value())),
         Speed::Indenter(v) => format!("V = {} m/s", lamb::error::short(v.value())),
     };
+    let short = |p: &wedge::Param| lamb::error::short(p.value());
     format!(
         "theta_deg = {}, gamma = {}, coupling {}, {speed}, c1 = {} m/s, c2 = {} m/s, solution {}, {}",
-        input.indenter.theta_deg().text(),
-        input.indenter.gamma().text(),
+        short(input.indenter.theta_deg()),
+        short(input.indenter.gamma()),
         match input.indenter.coupling() {
             Coupling::On => "on",
             Coupling::Off => "off",
         },
-        input.material.c1().text(),
-        input.material.c2().text(),
+        short(input.material.c1()),
+        short(input.material.c2()),
         input.solution.name(),
         match input.digits {
             None => "f64".to_string(),

@@ -403,7 +403,7 @@ impl SolveReport {
                 entry(
                     Ok(WithError {
                         value: a.exponent,
-                        error: 0.0,
+                        error: a.exponent_error,
                     }),
                     floor,
                     digits,

@@ -342,3 +342,58 @@ fn decimal_inputs_keep_their_digits() {
         );
     }
 }
+
+/// In the classical case (gamma = 0, no coupling) the genuine solution is the paper's, and
+/// the one interface reports the same apex behaviour for both, in the paper's normalisation
+/// sigma ~ A ln(2 p/x) (the genuine amplitude once had the opposite sign), with V, the force
+/// and the stress at the same values, each within the two estimates.
+#[test]
+fn both_variants_report_the_classical_case_alike() {
+    use dyncontact::{solve, stress, CaseInput, Speed};
+    use wedge::{ApexRegime, Coupling, Indenter, Material, Param, Solution};
+    let input = |solution| CaseInput {
+        material: Material::paper(),
+        indenter: Indenter::new(80.0, 0.0, Coupling::Off).unwrap(),
+        solution,
+        digits: None,
+    };
+    let speed = Speed::Alpha(Param::parse("alpha", "500").unwrap());
+    let at = [Param::parse("at", "0.25").unwrap()];
+    let (g, p) = (
+        solve(&input(Solution::Genuine), &speed, false).unwrap(),
+        solve(&input(Solution::Paper), &speed, false).unwrap(),
+    );
+    assert_eq!(g.regime, ApexRegime::Logarithmic);
+    assert_eq!(p.regime, ApexRegime::Logarithmic);
+    for key in [
+        "apex_amplitude_over_mu_cot_theta",
+        "v_over_c1_cot_theta",
+        "force_over_a_mu_cot_theta",
+    ] {
+        let (a, b) = (g.quantity(key).unwrap(), p.quantity(key).unwrap());
+        assert!(
+            (a.value() - b.value()).abs() <= a.error() + b.error(),
+            "{key}: genuine {} +- {:e}, paper {} +- {:e}",
+            a.text(),
+            a.error(),
+            b.text(),
+            b.error()
+        );
+    }
+    // the paper's amplitude is -Q/p (eq (41)): negative, as the compressive stress
+    assert!(
+        g.quantity("apex_amplitude_over_mu_cot_theta")
+            .unwrap()
+            .value()
+            < 0.0
+    );
+    let (sg, sp) = (
+        stress(&input(Solution::Genuine), &speed, &at).unwrap(),
+        stress(&input(Solution::Paper), &speed, &at).unwrap(),
+    );
+    let (a, b) = (
+        &sg.sigma_over_mu_cot_theta[0],
+        &sp.sigma_over_mu_cot_theta[0],
+    );
+    assert!((a.value() - b.value()).abs() <= a.error() + b.error());
+}

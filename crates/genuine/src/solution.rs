@@ -15,6 +15,16 @@ use crate::solver::{GenuineCase, SolveOptions};
 
 type WResult<T> = wedge::Result<T>;
 
+impl<T: CachedRules> GenuineCase<T> {
+    /// The forward error of `value` from the rounding of p near the Rayleigh speed
+    /// ([`wedge::solved::rayleigh_conditioning`]).
+    fn rayleigh_error(&self, value: &T) -> f64 {
+        let ray = self.basis().rayleigh();
+        wedge::solved::rayleigh_conditioning(&GenuineCase::p(self), ray.m_r())
+            * value.to_f64().abs()
+    }
+}
+
 impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
     fn solution(&self) -> Solution {
         Solution::Genuine
@@ -26,13 +36,13 @@ impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
         self.basis().rayleigh()
     }
     fn v_hat(&self) -> WResult<WithError<T>> {
-        Ok(WithError {
-            value: GenuineCase::v_hat(self),
-            error: self.error_estimate(),
-        })
+        let value = GenuineCase::v_hat(self);
+        let error = self.error_estimate() + self.rayleigh_error(&value);
+        Ok(WithError { value, error })
     }
     fn force_hat(&self) -> WResult<WithError<T>> {
         let (value, error) = self.force_hat_with_error();
+        let error = error + self.rayleigh_error(&value);
         Ok(WithError { value, error })
     }
     /// The stress with V's relative estimate (both come from the same basis).
@@ -48,10 +58,13 @@ impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
     }
     fn apex_leading(&self) -> WResult<ApexLeading<T>> {
         let (ex, value, error) = self.apex_with_error()?;
+        let error = error + self.rayleigh_error(&value);
         let exponent = ex.leading().cloned().unwrap_or_else(|| value.zero());
         Ok(ApexLeading {
             regime: ex.kind,
             exponent,
+            // a root of the eigen-equation in closed form
+            exponent_error: 0.0,
             amplitude: WithError { value, error },
         })
     }

@@ -759,7 +759,7 @@ impl<T: CachedRules> GenuineCase<T> {
                     (true, true) if d4 <= d2 / 4.0 && d2 > 0.0 => (100.0 * d4 * (d4 / d2)).min(d2),
                     (true, _) => d2,
                     (false, true) => 10.0 * d4.min(d2),
-                    (false, false) => 2.0 * d4.max(d2),
+                    (false, false) => 3.0 * d4.max(d2),
                 }
             }
             None => 2.0 * d2,

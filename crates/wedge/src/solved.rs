@@ -29,9 +29,11 @@ use crate::stress::WithError;
 pub struct ApexLeading<T> {
     /// Finite, logarithmic or power.
     pub regime: ApexRegime,
-    /// lambda of sigma ~ (p/x)^lambda for a power singularity, 0 otherwise (exact to the
-    /// working precision: a closed form or a root of the apex eigen-equation).
+    /// lambda of sigma ~ (p/x)^lambda for a power singularity, 0 otherwise (a closed form or
+    /// a root of the apex eigen-equation).
     pub exponent: T,
+    /// The absolute error estimate of the exponent (the forward error of its inputs' rounding).
+    pub exponent_error: f64,
     /// The amplitude A with its absolute error estimate.
     pub amplitude: WithError<T>,
 }
@@ -110,6 +112,81 @@ fn with_rel<T: Real>(value: T, rel: f64) -> WithError<T> {
     WithError { value, error }
 }
 
+/// The relative forward error that the rounding of p = alpha/c1 (and of m_R) to the working
+/// precision causes in a quantity that grows like a power (at most the first) of
+/// 1/(m_R - p) near the Rayleigh speed: 2 u p/(m_R - p), u the unit round-off. Negligible
+/// except within a few thousand ulps of m_R, where it dominates (`docs/errata.md`,
+/// section 10).
+pub fn rayleigh_conditioning<T: Real>(p: &T, m_r: &T) -> f64 {
+    let u = p.epsilon().to_f64();
+    let gap = (m_r.clone() - p).to_f64();
+    if gap > 0.0 {
+        2.0 * u * p.to_f64() / gap
+    } else {
+        f64::INFINITY
+    }
+}
+
+impl<T: CachedRules> Case<T> {
+    /// The absolute forward error of Omega0 from the rounding of beta + gamma, which cancels
+    /// near the regime boundary gamma = cot Theta: beta + gamma is uncertain by 4 u (|beta| +
+    /// |gamma|), or by the snapping tolerance when the boundary is taken as exact
+    /// ([`crate::case::REGIME_BOUNDARY_ULPS`]), and dOmega0/d(beta + gamma) =
+    /// m^2/((1 - beta gamma) pi (1 + x^2)), x = m^2 (beta + gamma)/(1 - beta gamma)
+    /// (`docs/errata.md`, section 10).
+    fn omega0_conditioning(&self) -> f64 {
+        let d_bpg = self.bpg_rounding();
+        let (b, g) = (self.beta().to_f64(), self.gamma().to_f64());
+        let m2 = self.rayleigh().m().to_f64().powi(2);
+        let den = 1.0 - b * g;
+        let x = m2 * (b + g) / den;
+        m2 / (den.abs() * std::f64::consts::PI * (1.0 + x * x)) * d_bpg
+    }
+
+    /// The absolute rounding error of beta + gamma (see [`Self::omega0_conditioning`]).
+    fn bpg_rounding(&self) -> f64 {
+        let u = self.p().epsilon().to_f64();
+        let (b, g) = (self.beta().to_f64(), self.gamma().to_f64());
+        let size = b.abs() + g.abs();
+        if self.on_regime_boundary() {
+            crate::case::REGIME_BOUNDARY_ULPS * u * size.max(self.cot_theta().to_f64() + g)
+        } else {
+            4.0 * u * size
+        }
+    }
+
+    /// The relative error of a quantity that scales like 1/Omega0 (the apex amplitude near
+    /// the regime boundary): the conditioning of Omega0 over |Omega0| (0 when Omega0 = 0).
+    fn inverse_omega0_conditioning(&self) -> f64 {
+        let o0 = Case::omega0(self).to_f64().abs();
+        if o0 > 0.0 {
+            self.omega0_conditioning() / o0
+        } else {
+            0.0
+        }
+    }
+
+    /// The absolute forward error of S0 from the rounding of beta + gamma: S0 integrates
+    /// Omega - Omega0, which for small beta + gamma is proportional to it, so S0 carries
+    /// the relative error of beta + gamma; at least the error of Omega0; both times 16 (the
+    /// sensitivity of Omega grows toward the Rayleigh speed).
+    fn s0_conditioning(&self) -> f64 {
+        let bpg = (self.beta().clone() + self.gamma()).to_f64().abs();
+        let relative = if bpg > 0.0 {
+            Case::s0(self).to_f64().abs() * self.bpg_rounding() / bpg
+        } else {
+            0.0
+        };
+        16.0 * self.omega0_conditioning().max(relative)
+    }
+
+    /// `value` with the matching's relative error and the Rayleigh conditioning.
+    fn estimated(&self, value: T) -> Result<WithError<T>> {
+        let rel = self.matching()?.rel_error + rayleigh_conditioning(self.p(), self.m_r());
+        Ok(with_rel(value, rel))
+    }
+}
+
 impl<T: CachedRules> ContactSolution<T> for Case<T> {
     fn solution(&self) -> Solution {
         Case::solution(self)
@@ -121,12 +198,10 @@ impl<T: CachedRules> ContactSolution<T> for Case<T> {
         Case::rayleigh(self)
     }
     fn v_hat(&self) -> Result<WithError<T>> {
-        let m = self.matching()?;
-        Ok(with_rel(m.v_hat.clone(), m.rel_error))
+        self.estimated(self.matching()?.v_hat.clone())
     }
     fn force_hat(&self) -> Result<WithError<T>> {
-        let rel = self.matching()?.rel_error;
-        Ok(with_rel(Case::force_hat(self)?, rel))
+        self.estimated(Case::force_hat(self)?)
     }
     fn stress_hat(&self, x: &T) -> Result<WithError<T>> {
         Case::stress_hat(self, x)
@@ -136,11 +211,15 @@ impl<T: CachedRules> ContactSolution<T> for Case<T> {
     }
     fn apex_leading(&self) -> Result<ApexLeading<T>> {
         let (regime, exponent, amplitude) = Case::apex_leading(self)?;
-        let rel = self.matching()?.rel_error;
+        // the amplitude scales like 1/Omega0 near the regime boundary; S0 enters through e^S0
+        let mut a = self.estimated(amplitude)?;
+        let rel = self.inverse_omega0_conditioning() + self.s0_conditioning();
+        a.error += 2.0 * rel * a.value.to_f64().abs();
         Ok(ApexLeading {
             regime,
             exponent,
-            amplitude: with_rel(amplitude, rel),
+            exponent_error: 2.0 * self.omega0_conditioning(),
+            amplitude: a,
         })
     }
     fn apex_leading_term(&self, x: &T) -> Result<T> {
@@ -153,36 +232,31 @@ impl<T: CachedRules> ContactSolution<T> for Case<T> {
         Ok(self.matching()?.rel_error)
     }
     // Omega0 is a closed form and S0 a converged Gauss-Legendre sum: both are stated with the
-    // matching's relative accuracy, which bounds their own.
+    // matching's relative accuracy, which bounds their own, plus the conditioning of
+    // beta + gamma near the regime boundary
     fn omega0(&self) -> Result<WithError<T>> {
-        let rel = self.matching()?.rel_error;
-        Ok(with_rel(Case::omega0(self), rel))
+        let mut w = self.estimated(Case::omega0(self))?;
+        w.error += self.omega0_conditioning();
+        Ok(w)
     }
     fn s0(&self) -> Result<WithError<T>> {
-        let rel = self.matching()?.rel_error;
-        let s0 = Case::s0(self);
-        let err = rel * s0.to_f64().abs() + self.inner().error();
-        Ok(WithError {
-            value: s0,
-            error: err,
-        })
+        let mut w = self.estimated(Case::s0(self))?;
+        w.error += self.inner().error() + self.s0_conditioning();
+        Ok(w)
     }
     fn q_hat(&self) -> Result<WithError<T>> {
-        let m = self.matching()?;
-        Ok(with_rel(m.q_hat.clone(), m.rel_error))
+        self.estimated(self.matching()?.q_hat.clone())
     }
     fn edge_slip_velocity_over_speed(&self) -> Result<WithError<T>> {
-        let rel = self.matching()?.rel_error;
-        Ok(with_rel(Case::edge_slip_velocity_over_speed(self)?, rel))
+        self.estimated(Case::edge_slip_velocity_over_speed(self)?)
     }
     fn edge_following_rate_over_speed(&self) -> Result<WithError<T>> {
-        let rel = self.matching()?.rel_error;
-        Ok(with_rel(Case::edge_following_rate_over_speed(self)?, rel))
+        self.estimated(Case::edge_following_rate_over_speed(self)?)
     }
     fn apex_u_r_over_speed_t(&self) -> Result<WithError<T>> {
-        let rel = self.matching()?.rel_error;
         let a = Case::apex_u_r_over_speed_t(self)?;
-        let error = a.error.max(rel * a.value.to_f64().abs());
+        let own = self.estimated(a.value.clone())?.error;
+        let error = a.error.max(own);
         Ok(WithError {
             value: a.value,
             error,

@@ -180,9 +180,16 @@ impl<T: CachedRules> Case<T> {
         } else {
             self.contact_integral(x, |v, pv| self.slip_integrand(v, pv))?
         };
+        // (I5 + I6) + J cancels where u_r vanishes (gamma = 0 at the apex): the error of the
+        // sum is that of its terms, (I5 + I6) with the matching's relative error and both
+        // with their round-off
+        let terms = i56.to_f64().abs() + j.value.to_f64().abs();
+        let cancel = (mt.rel_error * i56.to_f64().abs() + 8.0 * self.p.epsilon().to_f64() * terms)
+            * (q.clone() / &vh).to_f64().abs();
         let value = q.clone() * (i56 + &j.value) / &vh;
-        let error =
-            4.0 * j.error * (q / vh).to_f64().abs() + mt.rel_error * 2.0 * value.to_f64().abs();
+        let error = 4.0 * j.error * (q / vh).to_f64().abs()
+            + mt.rel_error * 2.0 * value.to_f64().abs()
+            + cancel;
         Ok(WithError { value, error })
     }
 
