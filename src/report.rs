@@ -641,3 +641,33 @@ impl FieldReport {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use wedge::{Coupling, Indenter, Material, Param};
+
+    /// The key lists, `items`, `quantities` and the mutable list the merges use name the same
+    /// entries in the same order: a field added to the report and forgotten in one of them
+    /// fails here.
+    #[test]
+    fn key_lists_match_the_report_fields() {
+        let input = CaseInput {
+            material: Material::paper(),
+            indenter: Indenter::new(86.0, 0.5, Coupling::On).unwrap(),
+            solution: Solution::Paper,
+            digits: None,
+        };
+        let speed = crate::Speed::Alpha(Param::parse("alpha", "500").unwrap());
+        let mut r = crate::solve(&input, &speed, false).unwrap();
+        let items: Vec<&str> = r.items().into_iter().map(|(k, _)| k).collect();
+        assert_eq!(items, SOLVE_KEYS);
+        let numbers: Vec<&str> = r.quantities().into_iter().map(|(k, _)| k).collect();
+        assert_eq!(numbers, ESTIMATED_KEYS);
+        let mut mutable: Vec<&str> = r.quantities_mut().into_iter().map(|(k, _)| k).collect();
+        mutable.sort_unstable();
+        let mut expected = ESTIMATED_KEYS.to_vec();
+        expected.sort_unstable();
+        assert_eq!(mutable, expected);
+    }
+}

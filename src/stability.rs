@@ -88,13 +88,44 @@ const SPEEDS: [(&str, f64); 5] = [
 /// The grid: the paper's construction over 5 Poisson ratios x 8 angles x 8 friction
 /// coefficients x 5 contact speeds (coupled), then the genuine solution over 3 x 5 x 3 x 3.
 pub fn grid() -> Vec<GridPoint> {
+    // every combination of the given Poisson ratios, angles, friction coefficients (as a
+    // function of cot Theta) and speeds, for one solution variant
+    fn product(
+        v: &mut Vec<GridPoint>,
+        solution: Solution,
+        nus: &[f64],
+        thetas: &[f64],
+        gammas: impl Fn(f64) -> Vec<f64>,
+        speeds: &[(&'static str, f64)],
+    ) {
+        for &nu in nus {
+            for &theta in thetas {
+                let cot = Indenter::new(theta, 0.0, Coupling::On)
+                    .expect("angle")
+                    .cot_theta(&0.0_f64);
+                for gamma in gammas(cot) {
+                    for &(p_label, p_spec) in speeds {
+                        v.push(GridPoint {
+                            nu,
+                            theta,
+                            gamma,
+                            p_label,
+                            p_spec,
+                            solution,
+                        });
+                    }
+                }
+            }
+        }
+    }
     let mut v = Vec::new();
-    for nu in [-0.9, 0.0, 0.3, 0.49, 0.4999] {
-        for theta in [1.0, 5.0, 10.0, 30.0, 60.0, 86.0, 89.0, 90.0 - 1e-6] {
-            let cot = Indenter::new(theta, 0.0, Coupling::On)
-                .expect("angle")
-                .cot_theta(&0.0_f64);
-            for gamma in [
+    product(
+        &mut v,
+        Solution::Paper,
+        &[-0.9, 0.0, 0.3, 0.49, 0.4999],
+        &[1.0, 5.0, 10.0, 30.0, 60.0, 86.0, 89.0, 90.0 - 1e-6],
+        |cot| {
+            vec![
                 0.0,
                 1e-12,
                 cot * (1.0 - 1e-12),
@@ -103,36 +134,18 @@ pub fn grid() -> Vec<GridPoint> {
                 0.6,
                 10.0,
                 1e6,
-            ] {
-                for (p_label, p_spec) in SPEEDS {
-                    v.push(GridPoint {
-                        nu,
-                        theta,
-                        gamma,
-                        p_label,
-                        p_spec,
-                        solution: Solution::Paper,
-                    });
-                }
-            }
-        }
-    }
-    for nu in [0.0, 0.3, 0.49] {
-        for theta in [1.0, 10.0, 60.0, 86.0, 89.0] {
-            for gamma in [0.3, 1.0, 10.0] {
-                for (p_label, p_spec) in [SPEEDS[1], SPEEDS[2], SPEEDS[3]] {
-                    v.push(GridPoint {
-                        nu,
-                        theta,
-                        gamma,
-                        p_label,
-                        p_spec,
-                        solution: Solution::Genuine,
-                    });
-                }
-            }
-        }
-    }
+            ]
+        },
+        &SPEEDS,
+    );
+    product(
+        &mut v,
+        Solution::Genuine,
+        &[0.0, 0.3, 0.49],
+        &[1.0, 10.0, 60.0, 86.0, 89.0],
+        |_| vec![0.3, 1.0, 10.0],
+        &SPEEDS[1..4],
+    );
     v
 }
 

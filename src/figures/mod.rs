@@ -88,12 +88,6 @@ impl From<impact::ImpactError> for FigError {
     }
 }
 
-impl From<genuine::GenuineError> for FigError {
-    fn from(e: genuine::GenuineError) -> Self {
-        FigError(e.to_string())
-    }
-}
-
 /// Result alias of the figures.
 pub type Result<T> = std::result::Result<T, FigError>;
 

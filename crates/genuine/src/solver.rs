@@ -925,12 +925,7 @@ impl<T: CachedRules> GenuineCase<T> {
     }
 
     /// The slip direction (8) as the wedge crate states it (du_r/dt > 0, u_r = u_x on x > 0)
-    /// at 8 sample points of the contact; true when gamma = 0.
-    pub fn slip_direction_ok(&self) -> Result<bool> {
-        Ok(self.slip_check()?.0)
-    }
-
-    /// The slip direction check and the smallest slip rate found at the 8 sample points
+    /// at 8 sample points of the contact, with the smallest slip rate found there
     /// (infinite when gamma = 0, where (8) does not apply and nothing is sampled).
     pub fn slip_check(&self) -> Result<(bool, f64)> {
         if self.prob.gamma == 0.0 {

@@ -228,9 +228,6 @@ impl<T: CachedRules> ContactSolution<T> for Case<T> {
     fn admissibility(&self) -> Result<Admissibility> {
         Case::admissibility(self)
     }
-    fn rel_error(&self) -> Result<f64> {
-        Ok(self.matching()?.rel_error)
-    }
     // Omega0 is a closed form and S0 a converged Gauss-Legendre sum: both are stated with the
     // matching's relative accuracy, which bounds their own, plus the conditioning of
     // beta + gamma near the regime boundary
