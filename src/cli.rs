@@ -5,9 +5,7 @@
 // `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use dyncontact::{
-    CaseInput, FieldReport, Item, SolveReport, StressReport, ESTIMATED_KEYS, FIELD_KEYS, SOLVE_KEYS,
-};
+use dyncontact::{CaseInput, FieldReport, Item, Selection, SolveReport, StressReport, FIELD_KEYS};
 use rug::Float;
 use serde_json::{Map, Number, Value};
 use wedge::{Coupling, Result, WedgeError};
@@ -25,15 +23,17 @@ pub fn ratio(x: f64) -> Value {
     num(&format!("{x:e}"))
 }
 
-fn item(it: &Item) -> Value {
-    match it {
+/// The JSON value of an item (`None` for one the selection left out).
+fn item(it: &Item) -> Option<Value> {
+    Some(match it {
         Item::Number(q) => num(q.text()),
         Item::Name(s) => Value::String((*s).into()),
         Item::Flag(b) => Value::Bool(*b),
         Item::Ratio(x) => ratio(*x),
         Item::Count(n) => Value::Number((*n).into()),
         Item::Unavailable(_) => Value::Null,
-    }
+        Item::Omitted => return None,
+    })
 }
 
 fn inputs(o: &mut Map<String, Value>, input: &CaseInput) {
@@ -48,14 +48,16 @@ fn inputs(o: &mut Map<String, Value>, input: &CaseInput) {
     o.insert("coupling".into(), Value::String(coupling.into()));
 }
 
-/// A `solve` report as a JSON object: the keys of [`SOLVE_KEYS`] (null where unavailable),
-/// `error_estimates` (absolute, per quantity), `unavailable` (the reasons, when any) and the
-/// case's inputs.
+/// A `solve` report as a JSON object: the keys of [`SOLVE_KEYS`] it carries (null where
+/// unavailable, absent where the selection left them out), `error_estimates` (absolute, per
+/// quantity), `unavailable` (the reasons, when any) and the case's inputs.
 pub fn solve_json(r: &SolveReport) -> Value {
     let mut o = Map::new();
     let items = r.items();
     for (k, it) in &items {
-        o.insert((*k).into(), item(it));
+        if let Some(v) = item(it) {
+            o.insert((*k).into(), v);
+        }
     }
     let est: Map<String, Value> = r
         .quantities()
@@ -75,28 +77,38 @@ pub fn solve_json(r: &SolveReport) -> Value {
     Value::Object(o)
 }
 
-/// The CSV header of `curve`: the [`SOLVE_KEYS`], then `err_<key>` for [`ESTIMATED_KEYS`].
-pub fn solve_csv_header() -> String {
-    SOLVE_KEYS
+/// The CSV header of `curve`: the [`SOLVE_KEYS`] of the selection, then `err_<key>` for its
+/// [`ESTIMATED_KEYS`].
+pub fn solve_csv_header(sel: &Selection) -> String {
+    sel.solve_keys()
         .iter()
         .map(|k| k.to_string())
-        .chain(ESTIMATED_KEYS.iter().map(|k| format!("err_{k}")))
+        .chain(sel.estimated_keys().iter().map(|k| format!("err_{k}")))
         .collect::<Vec<_>>()
         .join(",")
 }
 
-/// One CSV row of `curve` (empty cells where unavailable).
-pub fn solve_csv_row(r: &SolveReport) -> String {
-    let cell = |v: Value| match v {
-        Value::String(s) => s,
-        Value::Null => String::new(),
-        v => v.to_string(),
+/// One CSV row of `curve`, the columns of [`solve_csv_header`] (empty cells where
+/// unavailable).
+pub fn solve_csv_row(r: &SolveReport, sel: &Selection) -> String {
+    let cell = |v: Option<Value>| match v {
+        Some(Value::String(s)) => s,
+        Some(Value::Null) | None => String::new(),
+        Some(v) => v.to_string(),
     };
-    let values = r.items().into_iter().map(|(_, it)| cell(item(&it)));
-    let errs = ESTIMATED_KEYS.iter().map(|k| match r.quantity(k) {
-        Some(q) => cell(ratio(q.error())),
-        None => String::new(),
-    });
+    let keys = sel.solve_keys();
+    let values = r
+        .items()
+        .into_iter()
+        .filter(|(k, _)| keys.contains(k))
+        .map(|(_, it)| cell(item(&it)));
+    let errs = sel
+        .estimated_keys()
+        .into_iter()
+        .map(|k| match r.quantity(k) {
+            Some(q) => cell(Some(ratio(q.error()))),
+            None => String::new(),
+        });
     values.chain(errs).collect::<Vec<_>>().join(",")
 }
 

@@ -27,8 +27,8 @@ use wedge::{
 };
 
 pub use report::{
-    print_floor, Entry, FieldReport, Item, Quantity, SolveReport, StressReport, ESTIMATED_KEYS,
-    FIELD_KEYS, NOT_FOR_CURVE_ROWS, SOLVE_KEYS,
+    print_floor, Entry, FieldReport, Item, Quantity, Selection, SolveReport, StressReport,
+    ADMISSIBILITY_KEYS, ALWAYS_KEYS, ESTIMATED_KEYS, FIELD_KEYS, NOT_FOR_CURVE_ROWS, SOLVE_KEYS,
 };
 
 /// Library version, written into every output header.
@@ -176,6 +176,7 @@ pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
             let overflow = matches!(
                 &other,
                 WedgeError::Complex(complexfn::Error::NonFinite { .. })
+                    | WedgeError::NotFinite { .. }
             );
             let inputs = describe(input, speed);
             WedgeError::AtCase {
@@ -190,27 +191,29 @@ pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
     }
 }
 
-/// Solve a case and report it, at the requested precision, with the admissibility checks
-/// when `full` (at high precision they are sign checks made on the f64 twin of the case).
+/// Solve a case and report the quantities `sel` wants, at the requested precision (the
+/// admissibility checks, when selected, are sign checks made on the f64 twin of the case at
+/// high precision). What the selection leaves out is not computed.
 ///
 /// Every numeric quantity carries its own absolute estimate. With `digits`, the paper's
 /// construction is solved at two precisions (bits(digits) + 32 and + 64) and each estimate
 /// is at least the difference between the two ([`Solution::checked_at_two_precisions`]).
 /// When the indenter speed is given, the inverse solve's uncertainty in alpha is carried
 /// into every quantity through its slope (two f64 rows at nearby alpha).
-pub fn solve(input: &CaseInput, speed: &Speed, full: bool) -> Result<SolveReport> {
-    let mut r = solve_unlabelled(input, speed, full).map_err(|e| at_case(input, speed, e))?;
+pub fn solve(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveReport> {
+    let mut r = solve_unlabelled(input, speed, sel).map_err(|e| at_case(input, speed, e))?;
     if let Speed::Indenter(_) = speed {
-        inverse_estimates(input, &mut r).map_err(|e| at_case(input, speed, e))?;
+        inverse_estimates(input, &mut r, sel).map_err(|e| at_case(input, speed, e))?;
     }
     Ok(r)
 }
 
-fn solve_unlabelled(input: &CaseInput, speed: &Speed, full: bool) -> Result<SolveReport> {
+fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveReport> {
     let digits = input.out_digits();
+    let full = sel.wants_admissibility();
     let Precision::Bits(bits) = input.precision()? else {
         let s = build(input, speed, &0.0_f64)?;
-        let mut r = SolveReport::of(&s, input, digits)?;
+        let mut r = SolveReport::selected(&s, input, digits, sel)?;
         if full {
             r.set_admissibility(s.admissibility());
         }
@@ -219,10 +222,10 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, full: bool) -> Result<Solv
     let twice = input.solution.checked_at_two_precisions();
     let work = if twice { bits + GUARD_BITS } else { bits };
     let s = build(input, speed, &Float::with_val(work, 0))?;
-    let mut r = SolveReport::of(&s, input, digits + 10)?;
+    let mut r = SolveReport::selected(&s, input, digits + 10, sel)?;
     if twice {
         let lower = build(input, speed, &Float::with_val(bits, 0))?;
-        r.check_against(&SolveReport::of(&lower, input, digits + 10)?);
+        r.check_against(&SolveReport::selected(&lower, input, digits + 10, sel)?);
     }
     let mut r = r.rounded(digits, print_floor(digits, bits));
     if full {
@@ -238,14 +241,14 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, full: bool) -> Result<Solv
 /// within V's own estimate: alpha is uncertain by delta alpha = 2 delta V/(dV/d alpha), and
 /// every quantity Q(alpha) by |dQ/d alpha| delta alpha more (with a margin of 10 percent).
 /// The slopes are central differences of two f64 rows at alpha (1 +- 1e-5).
-fn inverse_estimates(input: &CaseInput, r: &mut SolveReport) -> Result<()> {
+fn inverse_estimates(input: &CaseInput, r: &mut SolveReport, sel: &Selection) -> Result<()> {
     let alpha = r.alpha.value();
     let h = 1e-5;
     let f64_input = CaseInput {
         digits: None,
         ..input.clone()
     };
-    let row = |a: f64| curve_row_unlabelled(&f64_input, &a.into());
+    let row = |a: f64| curve_row_unlabelled(&f64_input, &a.into(), sel);
     let (lo, hi) = (row(alpha * (1.0 - h))?, row(alpha * (1.0 + h))?);
     let slope = |k: &str| -> Option<f64> {
         let (a, b) = (lo.quantity(k)?.value(), hi.quantity(k)?.value());
@@ -272,22 +275,29 @@ fn inverse_estimates(input: &CaseInput, r: &mut SolveReport) -> Result<()> {
     Ok(())
 }
 
-/// One row of an alpha-V curve: the `solve` report at the requested precision (one solve,
-/// the estimates the solve's own) without the admissibility checks.
-pub fn curve_row(input: &CaseInput, alpha: &wedge::Param) -> Result<SolveReport> {
-    curve_row_unlabelled(input, alpha).map_err(|e| at_case(input, &Speed::Alpha(alpha.clone()), e))
+/// One row of an alpha-V curve: the quantities `sel` wants of the `solve` report at the
+/// requested precision (one solve, the estimates the solve's own), without the
+/// admissibility checks ([`NOT_FOR_CURVE_ROWS`]).
+pub fn curve_row(input: &CaseInput, alpha: &wedge::Param, sel: &Selection) -> Result<SolveReport> {
+    curve_row_unlabelled(input, alpha, sel)
+        .map_err(|e| at_case(input, &Speed::Alpha(alpha.clone()), e))
 }
 
-struct Row<'a>(&'a CaseInput, Speed);
+struct Row<'a>(&'a CaseInput, Speed, &'a Selection);
 
 impl Job<SolveReport> for Row<'_> {
     fn run<T: CachedRules>(&self, like: &T) -> Result<SolveReport> {
-        SolveReport::of(&build(self.0, &self.1, like)?, self.0, self.0.out_digits())
+        let s = build(self.0, &self.1, like)?;
+        SolveReport::selected(&s, self.0, self.0.out_digits(), self.2)
     }
 }
 
-fn curve_row_unlabelled(input: &CaseInput, alpha: &wedge::Param) -> Result<SolveReport> {
-    at_precision(input, &Row(input, Speed::Alpha(alpha.clone())))
+fn curve_row_unlabelled(
+    input: &CaseInput,
+    alpha: &wedge::Param,
+    sel: &Selection,
+) -> Result<SolveReport> {
+    at_precision(input, &Row(input, Speed::Alpha(alpha.clone()), sel))
 }
 
 struct Stress<'a>(&'a CaseInput, &'a Speed, &'a [wedge::Param]);

@@ -26,8 +26,14 @@ impl Quantity {
     /// `x` printed to `digits` significant digits, with the estimate `error` (at least
     /// `floor` |x|, the print floor); an error naming `key` when either is not finite.
     fn new<T: Real>(key: &str, x: &T, error: f64, floor: f64, digits: usize) -> Result<Self> {
-        if !(x.is_finite() && error.is_finite()) {
+        if !x.is_finite() {
             return Err(not_finite(key));
+        }
+        if !error.is_finite() {
+            return Err(WedgeError::Solver(format!(
+                "{key} has no error estimate here: the coarser rules or bases it is compared \
+                 with do not converge"
+            )));
         }
         Ok(Quantity {
             text: x.to_decimal(digits),
@@ -66,20 +72,21 @@ impl Quantity {
 }
 
 fn not_finite(key: &str) -> WedgeError {
-    WedgeError::NoConvergence {
-        what: format!("{key} (not finite at this precision)"),
-        reached: f64::INFINITY,
-        asked: 0.0,
+    WedgeError::NotFinite {
+        what: key.to_string(),
     }
 }
 
-/// A quantity that a case may lack: its value, or the reason it is unavailable.
+/// A quantity that a case may lack: its value, the reason it is unavailable, or left out by
+/// the caller's [`Selection`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum Entry<V> {
     /// The value.
     Value(V),
     /// Why there is no value.
     Unavailable(String),
+    /// Not computed: the selection left it out.
+    Omitted,
 }
 
 impl<V> Entry<V> {
@@ -87,14 +94,22 @@ impl<V> Entry<V> {
     pub fn value(&self) -> Option<&V> {
         match self {
             Entry::Value(v) => Some(v),
-            Entry::Unavailable(_) => None,
+            _ => None,
         }
     }
     /// The reason, if unavailable.
     pub fn reason(&self) -> Option<&str> {
         match self {
-            Entry::Value(_) => None,
             Entry::Unavailable(r) => Some(r),
+            _ => None,
+        }
+    }
+    /// The entry of `key` when `sel` wants it (computed by `f`), else [`Entry::Omitted`].
+    fn when(sel: &Selection, key: &str, f: impl FnOnce() -> Self) -> Self {
+        if sel.wants(key) {
+            f()
+        } else {
+            Entry::Omitted
         }
     }
 }
@@ -114,6 +129,8 @@ pub enum Item<'a> {
     Count(usize),
     /// Unavailable, with the reason.
     Unavailable(&'a str),
+    /// Left out by the selection (not serialised).
+    Omitted,
 }
 
 impl<'a> From<&'a Entry<Quantity>> for Item<'a> {
@@ -121,6 +138,7 @@ impl<'a> From<&'a Entry<Quantity>> for Item<'a> {
         match e {
             Entry::Value(q) => Item::Number(q),
             Entry::Unavailable(r) => Item::Unavailable(r),
+            Entry::Omitted => Item::Omitted,
         }
     }
 }
@@ -130,6 +148,7 @@ impl<'a> From<&'a Entry<bool>> for Item<'a> {
         match e {
             Entry::Value(b) => Item::Flag(*b),
             Entry::Unavailable(r) => Item::Unavailable(r),
+            Entry::Omitted => Item::Omitted,
         }
     }
 }
@@ -181,6 +200,98 @@ pub const ESTIMATED_KEYS: &[&str] = &[
     "apex_u_r_over_speed_t",
 ];
 
+/// The keys every report carries, whatever the [`Selection`]: the inputs, the solution
+/// variant, V (the solve's result), the apex regime and the summary estimate.
+pub const ALWAYS_KEYS: &[&str] = &[
+    "solution",
+    "alpha",
+    "speed",
+    "p",
+    "m",
+    "m_r",
+    "regime",
+    "v_over_c1_cot_theta",
+    "error_estimate",
+    "digits",
+];
+
+/// The admissibility flags (sign checks that sample the contact and its outside).
+pub const ADMISSIBILITY_KEYS: &[&str] = &[
+    "slip_direction_ok",
+    "contact_compressive",
+    "no_interpenetration",
+];
+
+/// Which quantities a report computes: every key of [`SOLVE_KEYS`] (the default), or the
+/// [`ALWAYS_KEYS`] and the keys selected. What is left out is not computed (each quantity is
+/// computed on demand by [`wedge::ContactSolution`]) and not printed.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Selection {
+    keys: Option<Vec<&'static str>>,
+}
+
+impl Selection {
+    /// Every quantity.
+    pub fn all() -> Self {
+        Selection { keys: None }
+    }
+    /// The [`ALWAYS_KEYS`] and `keys` (each a key of [`SOLVE_KEYS`]; an unknown key is an
+    /// error naming it and listing the keys).
+    pub fn of<S: AsRef<str>>(keys: &[S]) -> Result<Self> {
+        let mut out = Vec::new();
+        for k in keys {
+            let k = k.as_ref().trim();
+            match SOLVE_KEYS.iter().find(|s| **s == k) {
+                Some(s) => out.push(*s),
+                None => {
+                    return Err(WedgeError::InvalidParameter {
+                        name: "quantities",
+                        value: k.to_string(),
+                        range: format!("keys of a solve report: {}", SOLVE_KEYS.join(",")),
+                    })
+                }
+            }
+        }
+        Ok(Selection { keys: Some(out) })
+    }
+    /// Every quantity but the admissibility flags.
+    pub fn without_admissibility() -> Self {
+        Selection {
+            keys: Some(
+                SOLVE_KEYS
+                    .iter()
+                    .filter(|k| !ADMISSIBILITY_KEYS.contains(k))
+                    .copied()
+                    .collect(),
+            ),
+        }
+    }
+    /// Whether the report carries `key`.
+    pub fn wants(&self, key: &str) -> bool {
+        ALWAYS_KEYS.contains(&key) || self.keys.as_ref().is_none_or(|k| k.contains(&key))
+    }
+    /// Whether any admissibility flag is selected.
+    pub fn wants_admissibility(&self) -> bool {
+        ADMISSIBILITY_KEYS.iter().any(|k| self.wants(k))
+    }
+    /// The [`SOLVE_KEYS`] the report carries, in order.
+    pub fn solve_keys(&self) -> Vec<&'static str> {
+        SOLVE_KEYS
+            .iter()
+            .copied()
+            .filter(|k| self.wants(k))
+            .collect()
+    }
+    /// The [`ESTIMATED_KEYS`] the report carries, in order.
+    pub fn estimated_keys(&self) -> Vec<&'static str> {
+        ESTIMATED_KEYS
+            .iter()
+            .copied()
+            .filter(|k| self.wants(k))
+            .collect()
+    }
+}
+
 /// The reason given for the admissibility checks of curve rows.
 pub const NOT_FOR_CURVE_ROWS: &str =
     "not computed for curve rows (the sign checks of `solve` sample the contact)";
@@ -215,8 +326,8 @@ pub struct SolveReport {
     pub q_over_c1sq_cot_theta: Entry<Quantity>,
     /// V/(c1 cot Theta).
     pub v_over_c1_cot_theta: Quantity,
-    /// P/(alpha t mu cot Theta), eq (47).
-    pub force_over_a_mu_cot_theta: Quantity,
+    /// P/(alpha t mu cot Theta), eq (47) (an error when selected and not computable).
+    pub force_over_a_mu_cot_theta: Entry<Quantity>,
     /// du_r/dt at the contact edge over V (the paper's construction).
     pub edge_slip_velocity_over_speed: Entry<Quantity>,
     /// The rate of u_r following the edge over V (the paper's construction).
@@ -266,7 +377,10 @@ impl SolveReport {
                 (&self.q_over_c1sq_cot_theta).into(),
             ),
             q("v_over_c1_cot_theta", &self.v_over_c1_cot_theta),
-            q("force_over_a_mu_cot_theta", &self.force_over_a_mu_cot_theta),
+            (
+                "force_over_a_mu_cot_theta",
+                (&self.force_over_a_mu_cot_theta).into(),
+            ),
             (
                 "edge_slip_velocity_over_speed",
                 (&self.edge_slip_velocity_over_speed).into(),
@@ -315,12 +429,12 @@ impl SolveReport {
             ("m", &mut self.m),
             ("m_r", &mut self.m_r),
             ("v_over_c1_cot_theta", &mut self.v_over_c1_cot_theta),
+        ];
+        for (k, e) in [
             (
                 "force_over_a_mu_cot_theta",
                 &mut self.force_over_a_mu_cot_theta,
             ),
-        ];
-        for (k, e) in [
             ("omega0", &mut self.omega0),
             ("s0", &mut self.s0),
             ("apex_exponent", &mut self.apex_exponent),
@@ -381,9 +495,20 @@ fn entry<T: Real>(r: Result<WithError<T>>, floor: f64, digits: usize) -> Entry<Q
 }
 
 impl SolveReport {
-    /// The report of the solved case `s` of `input`, printed to `digits` digits, without the
-    /// admissibility checks ([`NOT_FOR_CURVE_ROWS`]; see [`Self::set_admissibility`]).
+    /// The report of the solved case `s` of `input`, printed to `digits` digits, every
+    /// quantity but the admissibility checks ([`NOT_FOR_CURVE_ROWS`]; see
+    /// [`Self::set_admissibility`]).
     pub fn of<T, S>(s: &S, input: &CaseInput, digits: usize) -> Result<Self>
+    where
+        T: complexfn::quadrature::CachedRules,
+        S: ContactSolution<T> + ?Sized,
+    {
+        Self::selected(s, input, digits, &Selection::all())
+    }
+
+    /// [`Self::of`] computing only the quantities `sel` wants; the others are
+    /// [`Entry::Omitted`].
+    pub fn selected<T, S>(s: &S, input: &CaseInput, digits: usize, sel: &Selection) -> Result<Self>
     where
         T: complexfn::quadrature::CachedRules,
         S: ContactSolution<T> + ?Sized,
@@ -393,30 +518,48 @@ impl SolveReport {
         let c1 = input.material.c1().to_real(&p);
         let cot = input.indenter.cot_theta(&p);
         let exact = |key: &str, x: &T| Quantity::new(key, x, 0.0, floor, digits);
+        let optional = |key: &str, f: &dyn Fn() -> Result<WithError<T>>| {
+            Entry::when(sel, key, || entry(f(), floor, digits))
+        };
         let v = s.v_hat()?;
-        let force = s.force_hat()?;
         let speed_scale = (c1.clone() * &cot).to_f64().abs();
         let speed = v.value.clone() * &c1 * &cot;
-        let (regime, apex_exponent, apex_amplitude) = match s.apex_leading() {
-            Ok(a) => (
-                a.regime,
-                entry(
-                    Ok(WithError {
-                        value: a.exponent,
-                        error: a.exponent_error,
+        let force = if sel.wants("force_over_a_mu_cot_theta") {
+            let f = s.force_hat()?;
+            Entry::Value(Quantity::new(
+                "force_over_a_mu_cot_theta",
+                &f.value,
+                f.error,
+                floor,
+                digits,
+            )?)
+        } else {
+            Entry::Omitted
+        };
+        let apex_keys = ["apex_exponent", "apex_amplitude_over_mu_cot_theta"];
+        let (regime, apex_exponent, apex_amplitude) = if !apex_keys.iter().any(|k| sel.wants(k)) {
+            (s.regime(), Entry::Omitted, Entry::Omitted)
+        } else {
+            match s.apex_leading() {
+                Ok(a) => (
+                    a.regime,
+                    Entry::when(sel, apex_keys[0], || {
+                        entry(
+                            Ok(WithError {
+                                value: a.exponent,
+                                error: a.exponent_error,
+                            }),
+                            floor,
+                            digits,
+                        )
                     }),
-                    floor,
-                    digits,
+                    Entry::when(sel, apex_keys[1], || entry(Ok(a.amplitude), floor, digits)),
                 ),
-                entry(Ok(a.amplitude), floor, digits),
-            ),
-            Err(e) => {
-                let why = format!("apex expansion: {e}");
-                (
-                    s.regime(),
-                    Entry::Unavailable(why.clone()),
-                    Entry::Unavailable(why),
-                )
+                Err(e) => {
+                    let why = format!("apex expansion: {e}");
+                    let un = |k| Entry::when(sel, k, || Entry::Unavailable(why.clone()));
+                    (s.regime(), un(apex_keys[0]), un(apex_keys[1]))
+                }
             }
         };
         let error_estimate = s.rel_error()?;
@@ -424,20 +567,24 @@ impl SolveReport {
             return Err(not_finite("error_estimate"));
         }
         let ray = s.rayleigh();
-        let not_here = || Entry::Unavailable(NOT_FOR_CURVE_ROWS.to_string());
-        Ok(SolveReport {
+        let not_here = |k| {
+            Entry::when(sel, k, || {
+                Entry::Unavailable(NOT_FOR_CURVE_ROWS.to_string())
+            })
+        };
+        let mut report = SolveReport {
             input: input.clone(),
             alpha: exact("alpha", &(p.clone() * &c1))?,
             speed: Quantity::new("speed", &speed, v.error * speed_scale, floor, digits)?,
             p: exact("p", &p)?,
             m: exact("m", ray.m())?,
             m_r: exact("m_r", ray.m_r())?,
-            omega0: entry(s.omega0(), floor, digits),
-            s0: entry(s.s0(), floor, digits),
+            omega0: optional("omega0", &|| s.omega0()),
+            s0: optional("s0", &|| s.s0()),
             regime,
             apex_exponent,
             apex_amplitude_over_mu_cot_theta: apex_amplitude,
-            q_over_c1sq_cot_theta: entry(s.q_hat(), floor, digits),
+            q_over_c1sq_cot_theta: optional("q_over_c1sq_cot_theta", &|| s.q_hat()),
             v_over_c1_cot_theta: Quantity::new(
                 "v_over_c1_cot_theta",
                 &v.value,
@@ -445,41 +592,52 @@ impl SolveReport {
                 floor,
                 digits,
             )?,
-            force_over_a_mu_cot_theta: Quantity::new(
-                "force_over_a_mu_cot_theta",
-                &force.value,
-                force.error,
-                floor,
-                digits,
-            )?,
-            edge_slip_velocity_over_speed: entry(s.edge_slip_velocity_over_speed(), floor, digits),
-            edge_following_rate_over_speed: entry(
-                s.edge_following_rate_over_speed(),
-                floor,
-                digits,
-            ),
-            apex_u_r_over_speed_t: entry(s.apex_u_r_over_speed_t(), floor, digits),
-            slip_direction_ok: not_here(),
-            contact_compressive: not_here(),
-            no_interpenetration: not_here(),
+            force_over_a_mu_cot_theta: force,
+            edge_slip_velocity_over_speed: optional("edge_slip_velocity_over_speed", &|| {
+                s.edge_slip_velocity_over_speed()
+            }),
+            edge_following_rate_over_speed: optional("edge_following_rate_over_speed", &|| {
+                s.edge_following_rate_over_speed()
+            }),
+            apex_u_r_over_speed_t: optional("apex_u_r_over_speed_t", &|| s.apex_u_r_over_speed_t()),
+            slip_direction_ok: not_here("slip_direction_ok"),
+            contact_compressive: not_here("contact_compressive"),
+            no_interpenetration: not_here("no_interpenetration"),
             error_estimate,
             digits,
-        })
+        };
+        report.summarise();
+        Ok(report)
     }
 
     /// Sets the three admissibility flags, or declares them unavailable with the reason.
     pub fn set_admissibility(&mut self, checks: Result<wedge::Admissibility>) {
-        match checks {
-            Ok(a) => {
-                self.slip_direction_ok = Entry::Value(a.slip_direction_ok);
-                self.contact_compressive = Entry::Value(a.contact_compressive);
-                self.no_interpenetration = Entry::Value(a.no_interpenetration);
-            }
-            Err(e) => {
-                let why = format!("admissibility checks: {e}");
-                self.slip_direction_ok = Entry::Unavailable(why.clone());
-                self.contact_compressive = Entry::Unavailable(why.clone());
-                self.no_interpenetration = Entry::Unavailable(why);
+        let (values, why) = match checks {
+            Ok(a) => (
+                [
+                    a.slip_direction_ok,
+                    a.contact_compressive,
+                    a.no_interpenetration,
+                ],
+                String::new(),
+            ),
+            Err(e) => ([false; 3], format!("admissibility checks: {e}")),
+        };
+        for (flag, value) in [
+            &mut self.slip_direction_ok,
+            &mut self.contact_compressive,
+            &mut self.no_interpenetration,
+        ]
+        .into_iter()
+        .zip(values)
+        {
+            // a flag the selection left out stays out
+            if *flag != Entry::Omitted {
+                *flag = if why.is_empty() {
+                    Entry::Value(value)
+                } else {
+                    Entry::Unavailable(why.clone())
+                };
             }
         }
     }
@@ -659,7 +817,7 @@ mod tests {
             digits: None,
         };
         let speed = crate::Speed::Alpha(Param::parse("alpha", "500").unwrap());
-        let mut r = crate::solve(&input, &speed, false).unwrap();
+        let mut r = crate::solve(&input, &speed, &Selection::without_admissibility()).unwrap();
         let items: Vec<&str> = r.items().into_iter().map(|(k, _)| k).collect();
         assert_eq!(items, SOLVE_KEYS);
         let numbers: Vec<&str> = r.quantities().into_iter().map(|(k, _)| k).collect();

@@ -208,8 +208,8 @@ pub fn check(pt: &GridPoint, compare: bool) -> Result<Outcome, String> {
         .iter()
         .map(|f| Param::parse("at", f).expect("fraction"))
         .collect();
-    let tested =
-        solve(&input, &speed, true).and_then(|r| Ok((crate::stress(&input, &speed, &at)?, r)));
+    let tested = solve(&input, &speed, &crate::Selection::all())
+        .and_then(|r| Ok((crate::stress(&input, &speed, &at)?, r)));
     let (stress, report) = match tested {
         Ok(x) => x,
         Err(e) => return Ok(Outcome::Refused(e.to_string())),

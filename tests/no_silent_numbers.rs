@@ -349,7 +349,7 @@ fn decimal_inputs_keep_their_digits() {
 /// and the stress at the same values, each within the two estimates.
 #[test]
 fn both_variants_report_the_classical_case_alike() {
-    use dyncontact::{solve, stress, CaseInput, Speed};
+    use dyncontact::{solve, stress, CaseInput, Selection, Speed};
     use wedge::{ApexRegime, Coupling, Indenter, Material, Param, Solution};
     let input = |solution| CaseInput {
         material: Material::paper(),
@@ -360,8 +360,18 @@ fn both_variants_report_the_classical_case_alike() {
     let speed = Speed::Alpha(Param::parse("alpha", "500").unwrap());
     let at = [Param::parse("at", "0.25").unwrap()];
     let (g, p) = (
-        solve(&input(Solution::Genuine), &speed, false).unwrap(),
-        solve(&input(Solution::Paper), &speed, false).unwrap(),
+        solve(
+            &input(Solution::Genuine),
+            &speed,
+            &Selection::without_admissibility(),
+        )
+        .unwrap(),
+        solve(
+            &input(Solution::Paper),
+            &speed,
+            &Selection::without_admissibility(),
+        )
+        .unwrap(),
     );
     assert_eq!(g.regime, ApexRegime::Logarithmic);
     assert_eq!(p.regime, ApexRegime::Logarithmic);

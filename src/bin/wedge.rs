@@ -13,7 +13,7 @@ use cli::{
     field_json, linspace, parse_params, parse_points, parse_range, solve_csv_header, solve_csv_row,
     solve_json, stress_json,
 };
-use dyncontact::{solve, CaseInput, SolveReport, Speed, FIELD_KEYS, VERSION};
+use dyncontact::{solve, CaseInput, Selection, SolveReport, Speed, FIELD_KEYS, VERSION};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rug::Float;
@@ -48,6 +48,8 @@ enum Command {
         speed: SpeedArgs,
         #[command(flatten)]
         out: OutArgs,
+        #[command(flatten)]
+        select: SelectArgs,
     },
     /// Contact stress sigma_theta/(mu cot Theta) at r/(alpha t) = the given fractions.
     Stress {
@@ -93,7 +95,27 @@ enum Command {
         /// Allow more than 10^4 points.
         #[arg(long)]
         force: bool,
+        #[command(flatten)]
+        select: SelectArgs,
     },
+}
+
+#[derive(Args, Debug, Clone)]
+struct SelectArgs {
+    /// Compute and print only these report keys (comma-separated, e.g.
+    /// v_over_c1_cot_theta,force_over_a_mu_cot_theta); the inputs, the solution variant, V,
+    /// the regime and the error estimates of what is printed always come along. Default: all.
+    #[arg(long)]
+    quantities: Option<String>,
+}
+
+impl SelectArgs {
+    fn selection(&self) -> Result<Selection> {
+        match &self.quantities {
+            None => Ok(Selection::all()),
+            Some(list) => Selection::of(&list.split(',').collect::<Vec<_>>()),
+        }
+    }
 }
 
 /// The largest `curve` grid computed without `--force`.
@@ -266,9 +288,14 @@ fn header_lines(input: &CaseInput) -> Vec<String> {
 fn run(cli: Cli) -> Result<()> {
     let stdout = std::io::stdout();
     match cli.command {
-        Command::Solve { case, speed, out } => {
+        Command::Solve {
+            case,
+            speed,
+            out,
+            select,
+        } => {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
-            let r = solve(&inp, &speed_of(&speed)?, true)?;
+            let r = solve(&inp, &speed_of(&speed)?, &select.selection()?)?;
             let v = solve_json(&r);
             if out.json {
                 println!("{v}");
@@ -322,8 +349,10 @@ fn run(cli: Cli) -> Result<()> {
             csv: _,
             json,
             force,
+            select,
         } => {
             let inp = input(&case, digits, Defaults::ByFriction)?;
+            let sel = select.selection()?;
             let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
             let bits = inp.precision()?.bits();
             if n > CURVE_CAP && !force {
@@ -347,14 +376,14 @@ fn run(cli: Cli) -> Result<()> {
                 for l in header_lines(&inp) {
                     writeln!(lock, "{l}").ok();
                 }
-                writeln!(lock, "{}", solve_csv_header()).ok();
+                writeln!(lock, "{}", solve_csv_header(&sel)).ok();
             }
             let mut first = true;
             for chunk in alphas.chunks(CURVE_CHUNK) {
                 let rows: Vec<Result<SolveReport>> = chunk
                     .par_iter()
                     .map(|a| {
-                        let r = dyncontact::curve_row(&inp, a);
+                        let r = dyncontact::curve_row(&inp, a, &sel);
                         bar.inc(1);
                         r
                     })
@@ -376,7 +405,7 @@ fn run(cli: Cli) -> Result<()> {
                         let sep = if first { "" } else { "," };
                         write!(lock, "{sep}{}", solve_json(&r)).ok();
                     } else {
-                        writeln!(lock, "{}", solve_csv_row(&r)).ok();
+                        writeln!(lock, "{}", solve_csv_row(&r, &sel)).ok();
                     }
                     first = false;
                 }

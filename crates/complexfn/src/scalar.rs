@@ -198,6 +198,12 @@ pub trait Real:
     fn is_sign_negative(&self) -> bool;
     /// Neither infinite nor NaN.
     fn is_finite(&self) -> bool;
+    /// The smallest positive normal value when the type's exponent range can be reached by
+    /// the library's computations (f64: 2.2e-308); `None` for MPFR, whose exponent range
+    /// (2^(+-2^30) and more) is never reached.
+    fn normal_floor(&self) -> Option<f64> {
+        None
+    }
 
     /// 1/self.
     #[inline]
@@ -357,6 +363,10 @@ impl Real for f64 {
     #[inline]
     fn is_finite(&self) -> bool {
         f64::is_finite(*self)
+    }
+    #[inline]
+    fn normal_floor(&self) -> Option<f64> {
+        Some(f64::MIN_POSITIVE)
     }
 }
 

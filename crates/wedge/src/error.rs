@@ -26,6 +26,13 @@ pub enum WedgeError {
         /// Relative error asked for.
         asked: f64,
     },
+    /// A computed quantity is not finite at the working precision (an overflow, or a
+    /// singularity its rule cannot integrate there): never reported as a value.
+    #[error("{what} is not finite at this precision (an overflow or a singularity the rule cannot integrate)")]
+    NotFinite {
+        /// The quantity (its report key).
+        what: String,
+    },
     /// The requested solution variant or quantity is not available for this case.
     #[error("{0}")]
     Unsupported(String),

@@ -407,13 +407,18 @@ impl<T: CachedRules> InnerRule<T> {
         let mut prev: Option<Self> = None;
         let mut last_d: Option<f64> = None;
         let eps = p.epsilon().to_f64().max(1e-300);
+        if omega.is_zero() {
+            // Omega = 0 (beta + gamma = 0): b, S0 and Lambda0 vanish identically. No rule is
+            // built and every sum over the (empty) nodes is an exact zero.
+            return Ok(InnerRule {
+                p2,
+                nodes: Vec::new(),
+                forms: Vec::new(),
+                error: 0.0,
+            });
+        }
         for _ in 0..6 {
-            let mut rule = Self::with_nodes(omega, &p2, n)?;
-            if omega.is_zero() {
-                // Omega = 0: b, S0 and Lambda0 vanish identically, nothing to converge.
-                rule.error = 0.0;
-                return Ok(rule);
-            }
+            let rule = Self::with_nodes(omega, &p2, n)?;
             if let Some(pr) = &prev {
                 let mut d = 0.0_f64;
                 let mut scale = 1e-300_f64;
@@ -448,22 +453,16 @@ impl<T: CachedRules> InnerRule<T> {
     fn with_nodes(omega: &OmegaFn<T>, p2: &T, n: usize) -> Result<Self> {
         let rule = gauss_legendre_rule::<T>(n, p2.prec())?;
         let half = p2.clone() / 2.0;
-        let zero = omega.is_zero();
         let form0 = omega.tan_form(&p2.zero());
-        let mut forms = Vec::with_capacity(if zero { 0 } else { n });
+        let mut forms = Vec::with_capacity(n);
         let nodes: Vec<(T, T, T)> = rule
             .iter()
             .map(|(x, w)| {
                 let u = half.clone() * (x.clone() + 1.0);
-                let om = if zero {
-                    u.zero()
-                } else {
-                    // omega(u) = u (Omega(u) - Omega(0))/(u - 0), free of cancellation
-                    let f = omega.tan_form(&u);
-                    let om = omega.divided_difference(&f, &form0) * &u;
-                    forms.push(f);
-                    om
-                };
+                // omega(u) = u (Omega(u) - Omega(0))/(u - 0), free of cancellation
+                let f = omega.tan_form(&u);
+                let om = omega.divided_difference(&f, &form0) * &u;
+                forms.push(f);
                 (u, w.clone() * &half, om)
             })
             .collect();
@@ -481,7 +480,7 @@ impl<T: Real> InnerRule<T> {
     pub fn len(&self) -> usize {
         self.nodes.len()
     }
-    /// Whether the rule is empty (never, once built).
+    /// Whether the rule is empty (when Omega vanishes identically, and only then).
     pub fn is_empty(&self) -> bool {
         self.nodes.is_empty()
     }
