@@ -53,14 +53,7 @@ def mpmath_curve(theta, gamma, coupled, alpha_list, dps):
         model = W.Model(theta, gamma, coupled, p, dps)
         errs = []
         with mp.workdps(dps):
-            i = dict(model.integrals(errs))
-            u = model.pole_unit()[0]
-            i[1] += model.gamma * u
-            i[3] += model.gamma * u / model.mR
-            i[5] -= u
-            i[7] -= u / model.mR
-            vq = (i[1] - i[2]) - model.beta * (i[5] + i[6])
-            cq = (i[3] - i[4]) - model.beta * (i[7] + i[8])
+            _, vq, cq = W.matching(model, model.integrals(errs), model.pole_unit()[0], True)
             out.append(vq / cq)
     return out
 

@@ -8,7 +8,7 @@
 use dyncontact::{CaseInput, FieldReport, Item, Selection, SolveReport, StressReport, FIELD_KEYS};
 use rug::Float;
 use serde_json::{Map, Number, Value};
-use wedge::{Coupling, Result, WedgeError};
+use wedge::{Result, WedgeError};
 
 /// A JSON number with exactly the digits given (arbitrary precision).
 pub fn num(s: &str) -> Value {
@@ -41,11 +41,10 @@ fn inputs(o: &mut Map<String, Value>, input: &CaseInput) {
     o.insert("c2".into(), num(input.material.c2().text()));
     o.insert("theta_deg".into(), num(input.indenter.theta_deg().text()));
     o.insert("gamma".into(), num(input.indenter.gamma().text()));
-    let coupling = match input.indenter.coupling() {
-        Coupling::On => "on",
-        Coupling::Off => "off",
-    };
-    o.insert("coupling".into(), Value::String(coupling.into()));
+    o.insert(
+        "coupling".into(),
+        Value::String(input.indenter.coupling().name().into()),
+    );
 }
 
 /// A `solve` report as a JSON object: the keys of [`SOLVE_KEYS`] it carries (null where

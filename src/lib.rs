@@ -22,8 +22,7 @@ use complexfn::Precision;
 use genuine::GenuineSolver;
 use rug::Float;
 use wedge::{
-    ContactSolution, Coupling, Indenter, Material, PaperSolver, Result, Solution, Solver,
-    WedgeError,
+    ContactSolution, Indenter, Material, PaperSolver, Result, Solution, Solver, WedgeError,
 };
 
 pub use report::{
@@ -153,10 +152,7 @@ pub fn describe(input: &CaseInput, speed: &Speed) -> String {
         "theta_deg = {}, gamma = {}, coupling {}, {speed}, c1 = {} m/s, c2 = {} m/s, solution {}, {}",
         short(input.indenter.theta_deg()),
         short(input.indenter.gamma()),
-        match input.indenter.coupling() {
-            Coupling::On => "on",
-            Coupling::Off => "off",
-        },
+        input.indenter.coupling().name(),
         short(input.material.c1()),
         short(input.material.c2()),
         input.solution.name(),

@@ -30,10 +30,7 @@ impl Quantity {
             return Err(not_finite(key));
         }
         if !error.is_finite() {
-            return Err(WedgeError::Solver(format!(
-                "{key} has no error estimate here: the coarser rules or bases it is compared \
-                 with do not converge"
-            )));
+            return Err(not_finite(&format!("the error estimate of {key}")));
         }
         Ok(Quantity {
             text: x.to_decimal(digits),
@@ -478,19 +475,17 @@ pub fn print_floor(digits: usize, bits: u32) -> f64 {
     (0.5 * 10f64.powi(1 - digits as i32)).max(8.0 * 2f64.powi(-(bits as i32)))
 }
 
-/// An optional quantity, or the reason it is unavailable (its error, a value that is not
-/// finite, or an estimate that is not).
-fn entry<T: Real>(r: Result<WithError<T>>, floor: f64, digits: usize) -> Entry<Quantity> {
-    match r {
+/// The optional quantity `key`, or the reason it is unavailable (its error, a value that is
+/// not finite, or an estimate that is not: [`Quantity::new`]).
+fn entry<T: Real>(
+    key: &str,
+    r: Result<WithError<T>>,
+    floor: f64,
+    digits: usize,
+) -> Entry<Quantity> {
+    match r.and_then(|w| Quantity::new(key, &w.value, w.error, floor, digits)) {
+        Ok(q) => Entry::Value(q),
         Err(e) => Entry::Unavailable(e.to_string()),
-        Ok(w) if !w.value.is_finite() => Entry::Unavailable("not finite at this precision".into()),
-        Ok(w) if !w.error.is_finite() => {
-            Entry::Unavailable("no error estimate at this precision".into())
-        }
-        Ok(w) => match Quantity::new("", &w.value, w.error, floor, digits) {
-            Ok(q) => Entry::Value(q),
-            Err(e) => Entry::Unavailable(e.to_string()),
-        },
     }
 }
 
@@ -519,7 +514,7 @@ impl SolveReport {
         let cot = input.indenter.cot_theta(&p);
         let exact = |key: &str, x: &T| Quantity::new(key, x, 0.0, floor, digits);
         let optional = |key: &str, f: &dyn Fn() -> Result<WithError<T>>| {
-            Entry::when(sel, key, || entry(f(), floor, digits))
+            Entry::when(sel, key, || entry(key, f(), floor, digits))
         };
         let v = s.v_hat()?;
         let speed_scale = (c1.clone() * &cot).to_f64().abs();
@@ -545,6 +540,7 @@ impl SolveReport {
                     a.regime,
                     Entry::when(sel, apex_keys[0], || {
                         entry(
+                            apex_keys[0],
                             Ok(WithError {
                                 value: a.exponent,
                                 error: a.exponent_error,
@@ -553,7 +549,9 @@ impl SolveReport {
                             digits,
                         )
                     }),
-                    Entry::when(sel, apex_keys[1], || entry(Ok(a.amplitude), floor, digits)),
+                    Entry::when(sel, apex_keys[1], || {
+                        entry(apex_keys[1], Ok(a.amplitude), floor, digits)
+                    }),
                 ),
                 Err(e) => {
                     let why = format!("apex expansion: {e}");
@@ -670,6 +668,7 @@ impl SolveReport {
             *q = q.rounded(digits, floor);
         }
         self.digits = digits;
+        self.summarise();
         self
     }
 

@@ -185,10 +185,7 @@ fn numbers(r: &crate::SolveReport, s: &StressReport) -> Vec<(String, Quantity)> 
 fn case_of(pt: &GridPoint, digits: Option<u32>) -> Result<(CaseInput, Speed), String> {
     let material = Material::from_poisson(pt.nu, 1000.0).map_err(|e| e.to_string())?;
     let indenter = Indenter::new(pt.theta, pt.gamma, Coupling::On).map_err(|e| e.to_string())?;
-    let m_r = complexfn::Rayleigh::new(material.m(&0.0_f64))
-        .map_err(|e| e.to_string())?
-        .m_r()
-        .to_owned();
+    let m_r = material.m_r().map_err(|e| e.to_string())?;
     let alpha = pt.p(m_r) * material.c1().value();
     let input = CaseInput {
         material,
@@ -230,18 +227,9 @@ pub fn check(pt: &GridPoint, compare: bool) -> Result<Outcome, String> {
         return Ok(outcome);
     }
     let bits = match pt.solution {
-        Solution::Genuine => {
-            let d = Some(GENUINE_REFERENCE_DIGITS);
-            match (CaseInput {
-                digits: d,
-                ..input.clone()
-            })
-            .precision()
-            {
-                Ok(Precision::Bits(b)) => b,
-                _ => return Err(format!("{}: no reference precision", pt.label())),
-            }
-        }
+        Solution::Genuine => Precision::from_digits(GENUINE_REFERENCE_DIGITS, crate::GUARD_BITS)
+            .map_err(|e| format!("{}: no reference precision: {e}", pt.label()))?
+            .bits(),
         _ => PAPER_REFERENCE_BITS,
     };
     let like = Float::with_val(bits, 0);

@@ -24,18 +24,12 @@ use super::{v_hat, VariantStyle, GENUINE, VARIANTS};
 use dyncontact::{solve_at, Solved};
 use wedge::ContactSolution;
 
-/// m_R = c_R/c1 of a material.
-pub fn m_r(mat: &Material) -> Result<f64> {
-    let ray = complexfn::Rayleigh::new(mat.m(&0.0_f64)).map_err(wedge::WedgeError::from)?;
-    Ok(*ray.m_r())
-}
-
 /// The contact speeds p = alpha/c1 of the alpha sweeps: n interior points of (0, m_R),
 /// evenly spaced in alpha; with `tail`, followed by p = m_R (1 - 10^(-k/2)), k = 4..8, which
 /// approach the Rayleigh speed (the last at 1e-4 below it, where the f64 path still holds
 /// about 10 digits).
 pub fn alpha_sweep(mat: &Material, n: usize, tail: bool) -> Result<Vec<f64>> {
-    let m_r = m_r(mat)?;
+    let m_r = mat.m_r()?;
     let mut s = interior(n);
     if tail {
         let last = s.last().copied().unwrap_or(0.0);
@@ -53,7 +47,7 @@ pub fn material_line(mat: &Material) -> Result<String> {
         "material: c1 = {} m/s, c2 = {} m/s, c_R = {:.6} m/s (Poisson's ratio {:.6})",
         mat.c1().text(),
         mat.c2().text(),
-        m_r(mat)? * mat.c1().value(),
+        mat.m_r()? * mat.c1().value(),
         mat.poisson()
     ))
 }
@@ -119,7 +113,7 @@ pub fn fig3(ctx: &Ctx) -> Result<Summary> {
     let mat = material();
     let ind = fig3_indenter()?;
     let m = mat.m(&0.0_f64);
-    let c_r_over_c2 = m_r(&mat)? / m;
+    let c_r_over_c2 = mat.m_r()? / m;
     let ps = alpha_sweep(&mat, ctx.points(100, 6), false)?;
     let jobs: Vec<(VariantStyle, f64)> = VARIANTS
         .iter()
@@ -290,7 +284,7 @@ fn speed_figure(
 ) -> Result<Summary> {
     let mat = material();
     let m = mat.m(&0.0_f64);
-    let c_r_over_c2 = m_r(&mat)? / m;
+    let c_r_over_c2 = mat.m_r()? / m;
     let ps = alpha_sweep(&mat, n, true)?;
     let gps = genuine_sweep(&mat, ctx.points(GENUINE_POINTS, 3))?;
     let jobs: Vec<(usize, f64)> = (0..curves.len())
@@ -365,11 +359,7 @@ fn speed_figure(
         t.push(vec![
             c.indenter.theta_deg().value().into(),
             c.indenter.gamma().value().into(),
-            match c.indenter.coupling() {
-                Coupling::On => "on",
-                Coupling::Off => "off",
-            }
-            .into(),
+            c.indenter.coupling().name().into(),
             c.solution.name().into(),
             p.into(),
             (p / m).into(),
@@ -468,7 +458,7 @@ pub const GENUINE_TOP: f64 = 0.95;
 /// The contact speeds of the genuine curves: n points evenly spaced in alpha on
 /// (0, GENUINE_TOP m_R].
 pub fn genuine_sweep(mat: &Material, n: usize) -> Result<Vec<f64>> {
-    let top = GENUINE_TOP * m_r(mat)?;
+    let top = GENUINE_TOP * mat.m_r()?;
     Ok((1..=n).map(|k| top * k as f64 / n as f64).collect())
 }
 

@@ -466,6 +466,21 @@ class Model:
         return r[0], r[1]  # (I1-I2)-beta(I5+I6), (I3-I4)-beta(I7+I8)
 
 
+def matching(M, I, U, pole_terms):
+    """The integrals I1..I8 as used (with the Rayleigh-pole terms of errata 4 when
+    `pole_terms`, the "paper" variant) and the two brackets of (53): V = Q VQ, Q CQ = 1 (in
+    units c1 cot Theta, c1^2 cot Theta)."""
+    J = dict(I)
+    if pole_terms:
+        J[1] += M.gamma * U
+        J[3] += M.gamma * U / M.mR
+        J[5] -= U
+        J[7] -= U / M.mR
+    VQ = (J[1] - J[2]) - M.beta * (J[5] + J[6])
+    CQ = (J[3] - J[4]) - M.beta * (J[7] + J[8])
+    return J, VQ, CQ
+
+
 def run_case(args):
     name, theta, gamma, coupled, p, dps, do_checks = args
     t0 = time.time()
@@ -475,17 +490,9 @@ def run_case(args):
     with mp.workdps(dps):
         I = M.integrals(errs)
         U, Lm, Hm, Rp = M.pole_unit()
-        beta = M.beta
         variants = {}
         for var in ("paper", "as_printed"):
-            J = dict(I)
-            if var == "paper":
-                J[1] += M.gamma * U
-                J[3] += M.gamma * U / M.mR
-                J[5] -= U
-                J[7] -= U / M.mR
-            VQ = (J[1] - J[2]) - beta * (J[5] + J[6])
-            CQ = (J[3] - J[4]) - beta * (J[7] + J[8])
+            J, VQ, CQ = matching(M, I, U, var == "paper")
             q_hat = 1 / CQ
             v_hat = q_hat * VQ
             d = {

@@ -402,10 +402,10 @@ const FLOOR_MARGIN: f64 = 1e20;
 ///
 /// Close to alpha = -1, kappa is large and the nodes of a whole range y < y_f put v - a below
 /// what a type with a narrow exponent range represents (f64: y_f = 0.0067 at alpha = -0.9925,
-/// where |v - a| = 1e-288 |b - a|). There the mapped integrand is taken as its value at y_f
-/// times (y/y_f)^(kappa (1 + alpha) - 1) (the power is 0 up to rounding): it equals
-/// kappa (b - a)^(1 + alpha) g(a + (b - a) y^kappa), constant to the relative variation of g
-/// over 1e-288 (b - a), far below the precision. MPFR's exponent range never needs this.
+/// where |v - a| = 1e-288 |b - a|). There the mapped integrand is taken as its value at y_f:
+/// it equals kappa (b - a)^(1 + alpha) g(a + (b - a) y^kappa) (y to the power
+/// kappa (1 + alpha) - 1 = 0), constant to the relative variation of g over 1e-288 (b - a),
+/// far below the precision. MPFR's exponent range never needs this.
 ///
 /// Returns the estimate of the last level and `|S_k - S_{k-1}|` as its error; fails with
 /// [`Error::NoConvergence`] when the finest cached level does not reach `opts.rel_tol`.
@@ -506,7 +506,6 @@ where
             let y_f = (near_f / len_f).powf(1.0 / kappa);
             (a.lit(y_f), a.lit(near_f))
         });
-    let residual_power = a.lit(kappa * (1.0 + alpha) - 1.0);
     let mut frozen: Option<V> = None;
     tanh_sinh_plain(&zero, &one, opts.without_ends(), |q: &Point<T>| {
         // y = distance from the singular end, normalised; 1 - y exactly from the offsets
@@ -516,17 +515,16 @@ where
         }
         if let Some((y_f, near_f)) = &floor {
             if y < y_f {
-                let at_floor = frozen
+                return frozen
                     .get_or_insert_with(|| mapped(y_f, &(one.clone() - y_f), near_f.clone()))
                     .clone();
-                let ratio = (y.clone() / y_f).ln() * &residual_power;
-                return at_floor.scaled(&ratio.exp());
             }
         }
         let near = (y.clone().ln() * &k).exp() * &len;
         if near == 0.0 {
-            // y^kappa underflowed: the mapped integrand is bounded there and the node's
-            // weight is below the underflow threshold.
+            // y^kappa underflowed (only for an interval shorter than the continuation's
+            // margin above the normal floor): the mapped integrand is bounded there and the
+            // node's weight is below the underflow threshold.
             return V::zero_like(a);
         }
         mapped(y, one_minus_y, near)

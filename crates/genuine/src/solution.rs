@@ -53,8 +53,7 @@ impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
         Ok(WithError { value, error })
     }
     fn regime(&self) -> ApexRegime {
-        let m = self.basis().rayleigh().m().clone();
-        crate::apex::exponents(m, self.beta(), self.gamma()).kind
+        self.exponents().kind
     }
     fn apex_leading(&self) -> WResult<ApexLeading<T>> {
         let (ex, value, error) = self.apex_with_error()?;

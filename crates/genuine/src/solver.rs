@@ -44,6 +44,8 @@
 //! and the case's endpoint exponents ([`crate::quad`]); the steps and the basis degree are
 //! options, with [`SolveOptions::for_precision`] giving the defaults for a precision.
 
+use std::sync::OnceLock;
+
 use complexfn::quadrature::CachedRules;
 use complexfn::{Cx, Rayleigh, Real};
 use wedge::{Coupling, Indenter, Material};
@@ -212,8 +214,11 @@ pub struct GenuineCase<T = f64> {
     /// The solve at degree N/2.
     coarse: Fit<T>,
     /// The solve at degree 3N/4.
-    middle: Option<Fit<T>>,
+    middle: Fit<T>,
     opts: SolveOptions,
+    /// The apex exponents, amplitude and its estimate ([`GenuineCase::apex_with_error`]),
+    /// computed once on demand.
+    apex: OnceLock<Result<(crate::apex::ApexExponents<T>, T, f64)>>,
 }
 
 impl<T: Real> Problem<T> {
@@ -658,7 +663,7 @@ impl<T: CachedRules> GenuineCase<T> {
         }
         let mut coarser = coarser.into_iter();
         let coarse = coarser.next().ok_or_else(no_value)?;
-        let middle = coarser.next();
+        let middle = coarser.next().ok_or_else(no_value)?;
         Ok(GenuineCase {
             prob,
             fit: Fit {
@@ -670,6 +675,7 @@ impl<T: CachedRules> GenuineCase<T> {
             coarse,
             middle,
             opts,
+            apex: OnceLock::new(),
         })
     }
 
@@ -715,12 +721,6 @@ impl<T: CachedRules> GenuineCase<T> {
         self.fit.v_hat.clone()
     }
 
-    /// V/(c1 cot Theta) of the coarse solve (half the degree), from which the error estimate
-    /// is taken.
-    pub fn coarse_v_hat(&self) -> T {
-        self.coarse.v_hat.clone()
-    }
-
     /// The (absolute) error estimate of V_hat, plus [`roundoff_floor`] |V_hat| of the working
     /// precision.
     ///
@@ -752,17 +752,12 @@ impl<T: CachedRules> GenuineCase<T> {
         let d2 = (fine.clone() - q(&self.coarse)?).abs().to_f64();
         let floor = roundoff_floor(self.prob.prec) * fine.to_f64().abs();
         let high = self.prob.prec > 64;
-        let d = match &self.middle {
-            Some(mid) => {
-                let d4 = (fine.clone() - q(mid)?).abs().to_f64();
-                match (extrapolate, high) {
-                    (true, true) if d4 <= d2 / 4.0 && d2 > 0.0 => (100.0 * d4 * (d4 / d2)).min(d2),
-                    (true, _) => d2,
-                    (false, true) => 10.0 * d4.min(d2),
-                    (false, false) => 3.0 * d4.max(d2),
-                }
-            }
-            None => 2.0 * d2,
+        let d4 = (fine.clone() - q(&self.middle)?).abs().to_f64();
+        let d = match (extrapolate, high) {
+            (true, true) if d4 <= d2 / 4.0 && d2 > 0.0 => (100.0 * d4 * (d4 / d2)).min(d2),
+            (true, _) => d2,
+            (false, true) => 10.0 * d4.min(d2),
+            (false, false) => 3.0 * d4.max(d2),
         };
         Ok(d + floor)
     }
@@ -782,7 +777,14 @@ impl<T: CachedRules> GenuineCase<T> {
     /// between the amplitudes of the degrees (not extrapolated), plus the round-off of the
     /// alternating sums that give the apex coefficients (the Chebyshev polynomials are (-1)^k
     /// at the apex): 8 units of the working precision times the amplitude built from |c_k|.
+    /// Computed once per case, then cached.
     pub fn apex_with_error(&self) -> Result<(crate::apex::ApexExponents<T>, T, f64)> {
+        self.apex
+            .get_or_init(|| self.compute_apex_with_error())
+            .clone()
+    }
+
+    fn compute_apex_with_error(&self) -> Result<(crate::apex::ApexExponents<T>, T, f64)> {
         let ex = self.exponents();
         let apex = self.apex_coefficients(&self.fit);
         let amp = self.amplitude_from(&ex, &self.fit, &apex)?;
@@ -1010,7 +1012,7 @@ impl<T: CachedRules> GenuineCase<T> {
         Ok((ex, amp))
     }
 
-    fn exponents(&self) -> crate::apex::ApexExponents<T> {
+    pub(crate) fn exponents(&self) -> crate::apex::ApexExponents<T> {
         let prob = &self.prob;
         crate::apex::exponents(prob.ray.m().clone(), prob.beta.clone(), prob.gamma.clone())
     }

@@ -52,9 +52,7 @@ pub fn for_speed<S: Solver, T: CachedRules>(
         return Err(invalid("speed", speed_param.text(), "(0, inf) m/s"));
     }
     // f64 solve
-    let m_r = complexfn::Rayleigh::new(material.m(&0.0_f64))?
-        .m_r()
-        .to_owned();
+    let m_r = material.m_r()?;
     let c = material.c1().value() * indenter.cot_theta(&0.0_f64);
     let target64 = speed / c;
     let v64 = |p: f64| -> Result<f64> { Ok(solver.solve(p)?.v_hat()?.value) };

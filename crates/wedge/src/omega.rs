@@ -514,7 +514,7 @@ impl<T: Real> InnerRule<T> {
         for (j, (u, w, om)) in self.nodes.iter().enumerate() {
             d.clone_from(u);
             d -= s;
-            if d.clone().abs() < *w && !self.forms.is_empty() {
+            if d.clone().abs() < *w {
                 let sf = s_form.get_or_insert_with(|| omega.tan_form(s));
                 acc += omega.divided_difference(&self.forms[j], sf) * w;
                 continue;
@@ -572,7 +572,7 @@ impl<T: Real> InnerRule<T> {
             let mut s_form: Option<TanForm<Cx<T>>> = None;
             for (j, (u, w, om)) in self.nodes.iter().enumerate() {
                 let den = (-s.clone()).add_re(u);
-                if den.abs() < *w && !self.forms.is_empty() {
+                if den.abs() < *w {
                     // next to a node: the divided difference without cancellation (as in b)
                     let sf = s_form.get_or_insert_with(|| omega.tan_form(&s));
                     acc += omega

@@ -132,7 +132,7 @@ impl Material {
     /// text parsed at that precision): the one check of the admissible range 0 < alpha < c_R
     /// (decided in f64; the construction at the working precision checks p < m_R again).
     pub fn p_of_alpha<T: Real>(&self, alpha: &Param, like: &T) -> Result<T> {
-        let c_r = complexfn::Rayleigh::new(self.m(&0.0_f64))?.m_r() * self.c1.value;
+        let c_r = self.m_r()? * self.c1.value;
         let av = alpha.value;
         if !(av.is_finite() && av > 0.0 && av < c_r) {
             return Err(invalid(
@@ -148,6 +148,11 @@ impl Material {
     pub fn m<T: Real>(&self, like: &T) -> T {
         self.c2.to_real(like) / self.c1.to_real(like)
     }
+    /// m_R = c_R/c1 in f64 (the Rayleigh root of m = c2/c1; [`complexfn::Rayleigh`] gives it
+    /// at any precision).
+    pub fn m_r(&self) -> Result<f64> {
+        Ok(*complexfn::Rayleigh::new(self.m(&0.0_f64))?.m_r())
+    }
     /// Poisson's ratio nu = (1 - 2 m^2)/(2 (1 - m^2)).
     pub fn poisson(&self) -> f64 {
         let m2 = (self.c2.value / self.c1.value).powi(2);
@@ -162,6 +167,16 @@ pub enum Coupling {
     On,
     /// beta = 0 (the classical formulation).
     Off,
+}
+
+impl Coupling {
+    /// The name the command line and the outputs use: `on` or `off`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Coupling::On => "on",
+            Coupling::Off => "off",
+        }
+    }
 }
 
 /// The rigid wedge: half-angle Theta (degrees, in (0, 90)), Coulomb friction gamma >= 0,
