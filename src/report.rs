@@ -668,7 +668,6 @@ impl SolveReport {
             *q = q.rounded(digits, floor);
         }
         self.digits = digits;
-        self.summarise();
         self
     }
 
