@@ -1,14 +1,15 @@
 //! Benchmarks: the Rayleigh root, Omega0 with S0 (a case build), a 100-point contact-stress
 //! profile, one full solve (Q, V) with friction and coupling, an alpha-V curve and the inverse
-//! alpha(V), each in f64 and at 30 and 100 digits; and one genuine solve (two basis sizes) in
-//! f64.
+//! alpha(V), each in f64 and at 30 and 100 digits (MPFR), the full solve and the curve also
+//! in double-double (what `--digits 30` runs on the paper's construction); and one genuine
+//! solve (two basis sizes) in f64.
 //!
 //! Run: `cargo bench --bench wedge`. The 200-point curve is benchmarked in f64 and at 30
 //! digits; at 100 digits a 10-point curve stands for it (per point it costs one full solve).
 
 use std::hint::black_box;
 
-use complexfn::{Precision, Rayleigh, Real};
+use complexfn::{Dd, Precision, Rayleigh, Real};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use rug::Float;
 use wedge::{case_for_speed, Case, Coupling, Indenter, Material, Solution};
@@ -130,6 +131,10 @@ fn bench_full_solve(c: &mut Criterion) {
             }
         };
     }
+    // what `--digits 30` runs on the paper's construction
+    g.bench_function("30_digits_double_double", |b| {
+        b.iter(|| paper_case(black_box(Dd::from_f64(0.3))).v_hat().unwrap())
+    });
     g.finish();
 }
 
@@ -169,6 +174,21 @@ fn bench_curve(c: &mut Criterion) {
                 })
             }),
         };
+        if d == Some(30) {
+            g.bench_function(BenchmarkId::new("30_digits_double_double", n), |b| {
+                b.iter(|| {
+                    ps.iter()
+                        .map(|&p| {
+                            Case::new(&mat, &ind, Dd::from_f64(p), Solution::Paper)
+                                .unwrap()
+                                .v_hat()
+                                .unwrap()
+                                .to_f64()
+                        })
+                        .sum::<f64>()
+                })
+            });
+        }
     }
     g.finish();
 }

@@ -18,7 +18,7 @@ pub mod report;
 pub mod stability;
 
 use complexfn::quadrature::CachedRules;
-use complexfn::Precision;
+use complexfn::{Dd, Precision, Real};
 use genuine::GenuineSolver;
 use rug::Float;
 use wedge::{
@@ -35,6 +35,14 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// Guard bits added to the precision that holds the requested digits.
 pub const GUARD_BITS: u32 = 32;
+
+/// Requests of at most this many digits on the paper's construction are computed in
+/// double-double arithmetic ([`complexfn::Dd`], 104 bits, no allocation), one solve per case,
+/// instead of MPFR: 10 to 100 times faster. Each quantity's estimate is then that of
+/// 104-bit arithmetic (typically 1e-29 to 1e-28 relative, larger near the Rayleigh speed),
+/// a bound that measured errors stay far below (`tests/double_double.rs`). The genuine
+/// solution and larger requests use MPFR (`docs/double-double.md`).
+pub const DOUBLE_DOUBLE_DIGITS: u32 = 30;
 
 /// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s),
 /// as decimal text parsed at the working precision (`f64.into()` for a double).
@@ -65,6 +73,20 @@ impl CaseInput {
         match self.digits {
             None => Ok(Precision::F64),
             Some(d) => Ok(Precision::from_digits(d, GUARD_BITS)?),
+        }
+    }
+    /// Whether the case is computed in double-double arithmetic: `digits` at most
+    /// [`DOUBLE_DOUBLE_DIGITS`] on the paper's construction (either variant).
+    pub fn uses_double_double(&self) -> bool {
+        self.digits.is_some_and(|d| d <= DOUBLE_DOUBLE_DIGITS)
+            && self.solution.checked_at_two_precisions()
+    }
+    /// The arithmetic of the case, for messages: `f64`, `double-double` or `MPFR`.
+    pub fn arithmetic(&self) -> &'static str {
+        match self.digits {
+            None => "f64",
+            Some(_) if self.uses_double_double() => "double-double",
+            Some(_) => "MPFR",
         }
     }
     /// Digits printed: the requested ones, or 16 for the f64 path.
@@ -133,10 +155,12 @@ trait Job<R> {
     fn run<T: CachedRules>(&self, like: &T) -> Result<R>;
 }
 
-/// Runs `job` at the working precision of `input`: f64, or a `rug::Float` of its bits.
+/// Runs `job` at the working precision of `input`: f64, double-double
+/// ([`CaseInput::uses_double_double`]), or a `rug::Float` of its bits.
 fn at_precision<R>(input: &CaseInput, job: &impl Job<R>) -> Result<R> {
     match input.precision()? {
         Precision::F64 => job.run(&0.0_f64),
+        Precision::Bits(_) if input.uses_double_double() => job.run(&Dd::from_f64(0.0)),
         Precision::Bits(b) => job.run(&Float::with_val(b, 0)),
     }
 }
@@ -158,7 +182,7 @@ pub fn describe(input: &CaseInput, speed: &Speed) -> String {
         input.solution.name(),
         match input.digits {
             None => "f64".to_string(),
-            Some(d) => format!("{d} digits"),
+            Some(d) => format!("{d} digits ({})", input.arithmetic()),
         }
     )
 }
@@ -191,9 +215,11 @@ pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
 /// admissibility checks, when selected, are sign checks made on the f64 twin of the case at
 /// high precision). What the selection leaves out is not computed.
 ///
-/// Every numeric quantity carries its own absolute estimate. With `digits`, the paper's
-/// construction is solved at two precisions (bits(digits) + 32 and + 64) and each estimate
-/// is at least the difference between the two ([`Solution::checked_at_two_precisions`]).
+/// Every numeric quantity carries its own absolute estimate. With `digits` above
+/// [`DOUBLE_DOUBLE_DIGITS`], the paper's construction is solved at two MPFR precisions
+/// (bits(digits) + 32 and + 64) and each estimate is at least the difference between the
+/// two ([`Solution::checked_at_two_precisions`]); up to that many digits it is solved once,
+/// in double-double arithmetic, with the estimates of that arithmetic.
 /// When the indenter speed is given, the inverse solve's uncertainty in alpha is carried
 /// into every quantity through its slope (two f64 rows at nearby alpha).
 pub fn solve(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveReport> {
@@ -215,18 +241,31 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result
         }
         return Ok(r);
     };
-    let twice = input.solution.checked_at_two_precisions();
-    let work = if twice { bits + GUARD_BITS } else { bits };
-    let s = build(input, speed, &Float::with_val(work, 0))?;
-    let mut r = SolveReport::selected(&s, input, digits + 10, sel)?;
-    if twice {
-        let lower = build(input, speed, &Float::with_val(bits, 0))?;
-        r.check_against(&SolveReport::selected(&lower, input, digits + 10, sel)?);
-    }
-    let mut r = r.rounded(digits, print_floor(digits, bits));
+    let (mut r, p) = if input.uses_double_double() {
+        // one solve: the estimates of 104-bit arithmetic bound its errors on their own
+        let s = build(input, speed, &Dd::from_f64(0.0))?;
+        let r = SolveReport::selected(&s, input, digits + 10, sel)?;
+        (
+            r.rounded(
+                digits,
+                print_floor(digits, complexfn::double_double::DD_BITS),
+            ),
+            s.p().to_f64(),
+        )
+    } else {
+        let twice = input.solution.checked_at_two_precisions();
+        let work = if twice { bits + GUARD_BITS } else { bits };
+        let s = build(input, speed, &Float::with_val(work, 0))?;
+        let mut r = SolveReport::selected(&s, input, digits + 10, sel)?;
+        if twice {
+            let lower = build(input, speed, &Float::with_val(bits, 0))?;
+            r.check_against(&SolveReport::selected(&lower, input, digits + 10, sel)?);
+        }
+        (r.rounded(digits, print_floor(digits, bits)), s.p().to_f64())
+    };
     if full {
         // the admissibility checks are sign checks: made on the f64 twin of the case
-        let alpha = s.p().to_f64() * input.material.c1().value();
+        let alpha = p * input.material.c1().value();
         let twin = build(input, &Speed::Alpha(alpha.into()), &0.0_f64)?;
         r.set_admissibility(twin.admissibility());
     }

@@ -117,10 +117,20 @@ impl<T: Real> Cx<T> {
             Cx::new(re, t.copysign(&self.im))
         }
     }
-    /// Principal logarithm.
+    /// Principal logarithm. Near the unit circle (1/2 < |z|^2 < 2) the real part is
+    /// ln_1p((x - 1)(x + 1) + y^2)/2, which keeps the relative accuracy of a small ln|z|
+    /// (ln of the rounded |z| would lose eps/|ln|z||).
     pub fn ln(self) -> Self {
         let a = self.arg();
-        Cx::new(self.abs().ln(), a)
+        let n = self.norm_sqr();
+        let re = if n > 0.5 && n < 2.0 {
+            let (x, y) = (self.re, self.im);
+            let d = (x.clone() - 1.0) * (x + 1.0) + y.sqr();
+            d.ln_1p() / 2.0
+        } else {
+            self.abs().ln()
+        };
+        Cx::new(re, a)
     }
     /// Exponential.
     pub fn exp(self) -> Self {
@@ -142,7 +152,7 @@ impl<T: Real> Cx<T> {
     /// axis beyond +-i. Evaluated in the cancellation-free form (z = x + i y)
     ///
     /// ```text
-    ///   Re atan z = atan2(2x, 1 - x^2 - y^2)/2,   Im atan z = log1p(4y/(x^2 + (1 - y)^2))/4,
+    ///   Re atan z = atan2(2x, (1 - y)(1 + y) - x^2)/2,   Im atan z = log1p(4y/(x^2 + (1 - y)^2))/4,
     /// ```
     ///
     /// so that both parts keep full relative accuracy for small |z| (the difference of the two
@@ -150,8 +160,10 @@ impl<T: Real> Cx<T> {
     pub fn atan(self) -> Self {
         let one = self.re.one();
         let (x, y) = (self.re, self.im);
-        let (x2, y2) = (x.clone().sqr(), y.clone().sqr());
-        let re = (x.clone() * 2.0).atan2(&(one.clone() - x2.clone() - y2)) / 2.0;
+        let x2 = x.clone().sqr();
+        // 1 - x^2 - y^2 with the cancellation near |y| = 1 taken out
+        let d = (one.clone() - &y) * (one.clone() + &y) - x2.clone();
+        let re = (x.clone() * 2.0).atan2(&d) / 2.0;
         let den = x2 + (one - &y).sqr();
         let im = (y * 4.0 / den).ln_1p() / 4.0;
         Cx::new(re, im)

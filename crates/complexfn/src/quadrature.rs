@@ -114,9 +114,14 @@ impl<T: Real, const N: usize> QuadValue<T> for [T; N] {
             *a += b.clone() * w;
         }
     }
+    /// The largest |component|; a component that is not finite is returned as it is, so
+    /// that a NaN is never hidden by the comparisons.
     fn magnitude(&self) -> T {
         let mut m = self[0].zero();
         for a in self.iter() {
+            if !a.is_finite() {
+                return a.clone().abs();
+            }
             m = m.max(a.clone().abs());
         }
         m
@@ -127,7 +132,11 @@ impl<T: Real, const N: usize> QuadValue<T> for [T; N] {
     fn distance(&self, other: &Self) -> T {
         let mut m = self[0].zero();
         for (a, b) in self.iter().zip(other.iter()) {
-            m = m.max((a.clone() - b).abs());
+            let d = (a.clone() - b).abs();
+            if !d.is_finite() {
+                return d;
+            }
+            m = m.max(d);
         }
         m
     }
@@ -309,6 +318,13 @@ pub trait CachedRules: Real {
 impl CachedRules for f64 {
     fn store() -> &'static RuleStore<f64> {
         static S: OnceLock<RuleStore<f64>> = OnceLock::new();
+        S.get_or_init(RuleStore::default)
+    }
+}
+
+impl CachedRules for crate::double_double::Dd {
+    fn store() -> &'static RuleStore<crate::double_double::Dd> {
+        static S: OnceLock<RuleStore<crate::double_double::Dd>> = OnceLock::new();
         S.get_or_init(RuleStore::default)
     }
 }

@@ -51,6 +51,10 @@ pub struct Matching<T> {
     pub v_hat: T,
     /// Estimated relative error of q_hat and v_hat (from the quadrature estimates).
     pub rel_error: f64,
+    /// Estimated absolute error of each of I1 ... I8 (quadrature and inner rule), without
+    /// round-off: what a combination of the integrals that cancels, such as I5 + I6, adds
+    /// to its relative error ([`Case::edge_slip_velocity_over_speed`]).
+    pub abs_error: f64,
     /// Integrand evaluations spent on the eight integrals.
     pub evals: usize,
 }
@@ -177,6 +181,7 @@ impl<T: CachedRules> Case<T> {
             q_hat,
             v_hat,
             rel_error,
+            abs_error: abs_err,
             evals: ea.evals + eb.evals,
         })
     }
@@ -199,6 +204,9 @@ impl<T: CachedRules> Case<T> {
 
     /// The tangential particle velocity du_r/dt at the contact edge r = alpha t, over V:
     /// (Q/c1)(I5 + I6)/V (`docs/errata.md`, section 5; pole term included for the `paper` variant).
+    ///
+    /// I5 + I6 may cancel: its own absolute error is added by
+    /// [`Case::combination_error`].
     pub fn edge_slip_velocity_over_speed(&self) -> Result<T> {
         let mt = self.matching()?;
         Ok(mt.q_hat.clone() * (mt.i[4].clone() + &mt.i[5]) / &mt.v_hat)
@@ -211,5 +219,20 @@ impl<T: CachedRules> Case<T> {
         let i56 = mt.i[4].clone() + &mt.i[5];
         let i78 = mt.i[6].clone() + &mt.i[7];
         Ok(mt.q_hat.clone() * (i56 - i78 * &self.p) / &mt.v_hat)
+    }
+
+    /// The absolute error that a combination sum_k w_k I_k of the matching integrals adds to
+    /// a quantity (Q/V) sum_k w_k I_k beyond the matching's relative error: |Q/V| times the
+    /// integrals' absolute errors and the round-off of the sum, 8 u sum_k |w_k I_k|. It
+    /// matters where the sum cancels (the edge velocities near the regime boundary).
+    pub fn combination_error(&self, weights: &[(usize, f64)]) -> Result<f64> {
+        let mt = self.matching()?;
+        let u = self.p.epsilon().to_f64();
+        let mut err = 0.0;
+        for &(k, w) in weights {
+            err += w.abs() * (mt.abs_error + 8.0 * u * mt.i[k].to_f64().abs());
+        }
+        let qv = (mt.q_hat.clone() / &mt.v_hat).to_f64().abs();
+        Ok(qv * err)
     }
 }

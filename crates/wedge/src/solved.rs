@@ -244,11 +244,17 @@ impl<T: CachedRules> ContactSolution<T> for Case<T> {
     fn q_hat(&self) -> Result<WithError<T>> {
         self.estimated(self.matching()?.q_hat.clone())
     }
+    // the edge velocities are (Q/V) times sums of integrals that may cancel
     fn edge_slip_velocity_over_speed(&self) -> Result<WithError<T>> {
-        self.estimated(Case::edge_slip_velocity_over_speed(self)?)
+        let mut w = self.estimated(Case::edge_slip_velocity_over_speed(self)?)?;
+        w.error += self.combination_error(&[(4, 1.0), (5, 1.0)])?;
+        Ok(w)
     }
     fn edge_following_rate_over_speed(&self) -> Result<WithError<T>> {
-        self.estimated(Case::edge_following_rate_over_speed(self)?)
+        let mut w = self.estimated(Case::edge_following_rate_over_speed(self)?)?;
+        let p = self.p().to_f64();
+        w.error += self.combination_error(&[(4, 1.0), (5, 1.0), (6, p), (7, p)])?;
+        Ok(w)
     }
     fn apex_u_r_over_speed_t(&self) -> Result<WithError<T>> {
         let a = Case::apex_u_r_over_speed_t(self)?;
