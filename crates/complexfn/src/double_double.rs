@@ -565,7 +565,7 @@ impl Real for Dd {
     }
 
     /// ln a = e ln 2 + ln m with a = 2^e m, m in [3/4, 3/2], and ln m by
-    /// [`Dd::ln1p_series`].
+    /// `ln1p_series`.
     fn ln(self) -> Self {
         if !(self.hi > 0.0) {
             return if self.hi == 0.0 {
@@ -603,7 +603,7 @@ impl Real for Dd {
         }
     }
     /// exp x = 2^k exp(r), r = x - k ln 2 (|r| <= ln(2)/2), exp(r) - 1 by
-    /// [`Dd::expm1_reduced`].
+    /// `expm1_reduced`.
     fn exp(self) -> Self {
         self.exp_times_pow2(0)
     }
@@ -624,7 +624,7 @@ impl Real for Dd {
         self.sin_cos().1
     }
     /// x = k pi/2 + r (|r| <= pi/4, pi/2 to five doubles), then the Taylor series of r
-    /// ([`Dd::sin_cos_reduced`]) and the quadrant of k.
+    /// (`sin_cos_reduced`) and the quadrant of k.
     fn sin_cos(self) -> (Self, Self) {
         if !self.hi.is_finite() {
             return (Dd::nan(), Dd::nan());
