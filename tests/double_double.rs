@@ -137,7 +137,7 @@ fn thirty_digit_rows_agree_with_mpfr_to_their_estimates() {
             for (k, q) in dd.quantities() {
                 let Some(r) = mp.quantity(k) else { continue };
                 let (x, y): (f64, f64) = (q.value(), r.value());
-                // the printed 30 digits: compare as decimal text at 40 digits
+                // the printed digits of both, read back exactly
                 let xs = Float::with_val(200, Float::parse(q.text()).unwrap());
                 let ys = Float::with_val(200, Float::parse(r.text()).unwrap());
                 let diff = Float::with_val(200, xs - ys).abs().to_f64();

@@ -283,21 +283,26 @@ impl Dd {
         sum.mul_f64(2.0)
     }
 
+    /// The sum of `first` and the terms t_k = next(t_(k-1), k), k = 1, 2, ..., up to the
+    /// first below [`SERIES_TOL`] relative to the sum (a NaN stops it too).
+    fn series(first: Dd, mut next: impl FnMut(Dd, f64) -> Dd) -> Dd {
+        let (mut term, mut sum) = (first, first);
+        let mut k = 1.0_f64;
+        loop {
+            term = next(term, k);
+            sum += term;
+            if !(term.hi.abs() > SERIES_TOL * sum.hi.abs()) {
+                return sum;
+            }
+            k += 1.0;
+        }
+    }
+
     /// exp(r) - 1 for |r| <= ln(2)/2: r/1024 by its Taylor series, then ten squarings
     /// (1 + s)^2 - 1 = s (2 + s), which keep the relative accuracy of small results.
     fn expm1_reduced(r: Dd) -> Dd {
         let x = r.ldexp(-10);
-        let mut term = x;
-        let mut s = x;
-        let mut n = 1.0_f64;
-        loop {
-            n += 1.0;
-            term = (term * x).div_f64(n);
-            s += term;
-            if !(term.hi.abs() > SERIES_TOL * s.hi.abs()) {
-                break;
-            }
-        }
+        let mut s = Dd::series(x, |t, k| (t * x).div_f64(k + 1.0));
         for _ in 0..10 {
             s = s * (s + 2.0);
         }
@@ -330,35 +335,24 @@ impl Dd {
             return (r, Dd::from_f64(1.0));
         }
         let r2 = r * r;
-        // sin: r - r^3/3! + ...
-        let mut term = r;
-        let mut s = r;
-        let mut n = 1.0_f64;
-        loop {
-            term = -(term * r2).div_f64((n + 1.0) * (n + 2.0));
-            n += 2.0;
-            s += term;
-            if !(term.hi.abs() > SERIES_TOL * s.hi.abs()) {
-                break;
-            }
-        }
-        // cos: 1 - r^2/2! + ...
-        let mut term = Dd::from_f64(1.0);
-        let mut c = term;
-        let mut n = 0.0_f64;
-        loop {
-            term = -(term * r2).div_f64((n + 1.0) * (n + 2.0));
-            n += 2.0;
-            c += term;
-            if !(term.hi.abs() > SERIES_TOL) {
-                break;
-            }
-        }
+        // r - r^3/3! + ... and 1 - r^2/2! + ...
+        let s = Dd::series(r, |t, k| -(t * r2).div_f64((2.0 * k) * (2.0 * k + 1.0)));
+        let c = Dd::series(Dd::from_f64(1.0), |t, k| {
+            -(t * r2).div_f64((2.0 * k - 1.0) * (2.0 * k))
+        });
         (s, c)
     }
 }
 
 impl Dd {
+    #[inline(always)]
+    fn sub_dd(self, b: Dd) -> Dd {
+        self.add_dd(-b)
+    }
+    #[inline(always)]
+    fn sub_f64(self, b: f64) -> Dd {
+        self.add_f64(-b)
+    }
     /// self^n by binary powering.
     fn powi_unsigned(self, n: u32) -> Dd {
         let mut base = self;
@@ -442,17 +436,6 @@ macro_rules! binary_ops {
             }
         }
     };
-}
-
-impl Dd {
-    #[inline(always)]
-    fn sub_dd(self, b: Dd) -> Dd {
-        self.add_dd(-b)
-    }
-    #[inline(always)]
-    fn sub_f64(self, b: f64) -> Dd {
-        self.add_f64(-b)
-    }
 }
 
 binary_ops!(Add, add, AddAssign, add_assign, add_dd, add_f64);
@@ -587,10 +570,8 @@ impl Real for Dd {
         if e == 0 {
             return lnm;
         }
-        let k = f64::from(e);
-        let (p1, e1) = two_prod(k, LN2[0]);
-        let (p2, e2) = two_prod(k, LN2[1]);
-        Dd::new(p1, e1) + Dd::new(p2, e2) + k * LN2[2] + lnm
+        // ln m + e ln 2, the products exact as in exp's reduction
+        lnm.reduce(-f64::from(e), &LN2)
     }
     fn ln_1p(self) -> Self {
         if self.hi == 0.0 {
@@ -657,7 +638,7 @@ impl Real for Dd {
         if (x.hi == 0.0 && y.hi == 0.0) || !(x.hi.is_finite() && y.hi.is_finite()) {
             // the exact multiples of pi/4 of the special cases, as double-doubles
             let z = y.hi.atan2(x.hi);
-            let k = (z / (0.25 * PI_2[0] * 2.0)).round();
+            let k = (z / std::f64::consts::FRAC_PI_4).round();
             return if z.is_nan() || k == 0.0 {
                 Dd::from_f64(z)
             } else {
@@ -748,7 +729,7 @@ impl Real for Dd {
     }
     #[inline]
     fn abs(self) -> Self {
-        if self.hi < 0.0 || (self.hi == 0.0 && self.hi.is_sign_negative()) {
+        if self.hi.is_sign_negative() {
             -self
         } else {
             self
@@ -796,14 +777,6 @@ impl Real for Dd {
     #[inline]
     fn normal_floor(&self) -> Option<f64> {
         Some(pow2(-969))
-    }
-    #[inline]
-    fn mul_add_assign(&mut self, a: &Self, b: &Self) {
-        *self += *a * *b;
-    }
-    #[inline]
-    fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
-        *self -= *a * *b;
     }
     #[inline]
     fn recip(self) -> Self {

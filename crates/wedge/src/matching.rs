@@ -232,7 +232,6 @@ impl<T: CachedRules> Case<T> {
         for &(k, w) in weights {
             err += w.abs() * (mt.abs_error + 8.0 * u * mt.i[k].to_f64().abs());
         }
-        let qv = (mt.q_hat.clone() / &mt.v_hat).to_f64().abs();
-        Ok(qv * err)
+        Ok((mt.q_hat.to_f64() / mt.v_hat.to_f64()).abs() * err)
     }
 }
