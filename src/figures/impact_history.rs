@@ -221,7 +221,7 @@ pub fn impact_pressure(ctx: &Ctx) -> Result<Summary> {
             },
             Column {
                 name: "p_over_rho_c1sq",
-                meaning: "cell pressure over rho c1^2 (constant over the cell and the step)",
+                meaning: "cell pressure over rho c1^2 (constant over the cell and the step; it stands for the middle of the step)",
             },
             Column {
                 name: "b_over_R",

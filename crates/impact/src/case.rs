@@ -81,6 +81,10 @@ pub struct ImpactCase {
     /// Refinement levels for the error estimate (the finest grid dx and 2, 4, ... times
     /// coarser); 1 gives no estimate, 3 (default) gives the observed order.
     pub levels: usize,
+    /// Whether the edge cell carries the local behaviour of the pressure at a moving edge
+    /// (`lamb::edge`, `docs/impact.md`, section 4; default): the edge then moves continuously
+    /// inside its cell. `false`: whole cells (the edge captured cell by cell).
+    pub edge_model: bool,
 }
 
 impl ImpactCase {
@@ -96,6 +100,7 @@ impl ImpactCase {
             dx: 0.01,
             kappa: 2.0,
             levels: 3,
+            edge_model: true,
         }
     }
 
@@ -245,6 +250,23 @@ impl ImpactCase {
         Ok(())
     }
 
+    /// The factor of the edge model's gap coefficient for the pair of bodies
+    /// (`docs/impact.md`, section 4): 1 for a rigid striker; 1 + mu/mu_s for an elastic
+    /// striker of the half-plane's wave speeds (both local solutions then share the
+    /// exponents, and the gaps add); `None` otherwise (the edge is captured cell by cell).
+    fn edge_gap_scale(&self, m: f64) -> Option<f64> {
+        if !self.edge_model {
+            return None;
+        }
+        match &self.striker {
+            Striker::Rigid => Some(1.0),
+            Striker::Elastic(s) if s.c1_ratio == 1.0 && (s.c2_ratio - m).abs() <= 1e-12 * m => {
+                Some(1.0 + m * m / (s.density_ratio * s.c2_ratio * s.c2_ratio))
+            }
+            _ => None,
+        }
+    }
+
     /// Solves the case on `levels` grids (dx, 2 dx, ...). `progress` is called with the
     /// fraction done.
     pub fn solve(&self, mut progress: impl FnMut(f64)) -> Result<Solution> {
@@ -293,7 +315,8 @@ impl ImpactCase {
                 self.law,
                 dx,
                 self.kappa,
-            );
+            )
+            .with_edge_gap_scale(self.edge_gap_scale(m));
             // the nearest step to the end time, never past the striker model's validity
             let valid = (self.striker.validity_end() / march.dt() + 1e-9).floor();
             let nsteps = (self.end / march.dt()).round().min(valid) as usize;
@@ -475,6 +498,22 @@ impl Solution {
         (n >= 1).then(|| run.steps.get(n - 1).map(&f)).flatten()
     }
 
+    /// The force at the step time t_n (`docs/impact.md`, section 3): the step's force
+    /// stands for the middle of the step, so the mean of the two steps around t_n (the last
+    /// step extrapolated from the two before it).
+    fn force_sample(&self, run: &Run, t: f64) -> Option<f64> {
+        let n = (t / run.dt).round() as usize;
+        if n == 0 {
+            return None;
+        }
+        let f = |i: usize| run.steps.get(i).map(|s| s.force);
+        match (f(n - 1), f(n)) {
+            (Some(a), Some(b)) => Some(0.5 * (a + b)),
+            (Some(a), None) if n >= 2 => f(n - 2).map(|z| 1.5 * a - 0.5 * z),
+            (a, _) => a,
+        }
+    }
+
     fn kinetic(&self, v: f64) -> Option<f64> {
         // (1/2) m0 v^2 in units mu R^2 -> over rho c1^2 R^2 = (1/m^2)
         self.mass.map(|mass| 0.5 * mass * v * v * self.m * self.m)
@@ -500,13 +539,21 @@ impl Solution {
         // samples[q][level][i]
         let samples: Vec<Vec<Vec<f64>>> = getters
             .iter()
-            .map(|g| {
+            .enumerate()
+            .map(|(q, g)| {
                 self.runs
                     .iter()
                     .map(|r| {
                         times
                             .iter()
-                            .map(|&t| self.sample(r, t, g).unwrap_or(f64::NAN))
+                            .map(|&t| {
+                                if q == 3 {
+                                    self.force_sample(r, t)
+                                } else {
+                                    self.sample(r, t, g)
+                                }
+                                .unwrap_or(f64::NAN)
+                            })
                             .collect()
                     })
                     .collect()
@@ -625,16 +672,17 @@ impl Solution {
         )
     }
 
-    /// Pressure profile p/(rho c1^2) at the finest grid's step nearest to c1 t/R = `t`:
-    /// (the step's time, the cell centres x/R, the pressures).
+    /// Pressure profile p/(rho c1^2) of the finest grid's step whose middle is nearest to
+    /// c1 t/R = `t` (a step's pressures stand for the middle of the step, `docs/impact.md`,
+    /// section 3): (that time, the cell centres x/R, the pressures).
     pub fn pressure_at(&self, t: f64) -> Option<(f64, Vec<f64>, Vec<f64>)> {
         let fine = &self.runs[0];
-        let n = ((t / fine.dt).round() as usize).clamp(1, fine.steps.len());
+        let n = ((t / fine.dt + 0.5).round() as usize).clamp(1, fine.steps.len());
         let st = fine.steps.get(n - 1)?;
         let m2 = self.m * self.m;
         let x = (0..st.pressure.len()).map(|j| j as f64 * fine.dx).collect();
         let p = st.pressure.iter().map(|v| v * m2).collect();
-        Some((st.t, x, p))
+        Some((st.t - 0.5 * fine.dt, x, p))
     }
 
     /// The shell striker's strain and vibration kinetic energy over rho c1^2 R^2 after each
@@ -715,10 +763,10 @@ impl Solution {
     /// Peak force over rho c1^2 R and its time, on the finest grid.
     pub fn peak_force(&self) -> Option<(f64, f64)> {
         let m2 = self.m * self.m;
-        self.runs[0]
-            .steps
+        let run = &self.runs[0];
+        run.steps
             .iter()
-            .max_by(|a, b| a.force.total_cmp(&b.force))
-            .map(|s| (s.force * m2, s.t))
+            .filter_map(|s| self.force_sample(run, s.t).map(|f| (f * m2, s.t)))
+            .max_by(|a, b| a.0.total_cmp(&b.0))
     }
 }

@@ -91,6 +91,10 @@ pub struct March<'a> {
     pub steps: Vec<StepState>,
     /// Time of separation (free striker), if it happened.
     pub separation: Option<f64>,
+    /// The factor of the edge model's gap coefficient for the pair of bodies (1 for a
+    /// rigid striker); `None` when the local model does not apply (a striker of other wave
+    /// speeds or a shell): the edge is then captured cell by cell.
+    edge_gap_scale: Option<f64>,
 }
 
 fn solve_dense(mut a: Vec<f64>, mut r: Vec<f64>, n: usize) -> Option<Vec<f64>> {
@@ -132,6 +136,51 @@ fn solve_dense(mut a: Vec<f64>, mut r: Vec<f64>, n: usize) -> Option<Vec<f64>> {
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
+/// The local model of the edge cell (`docs/impact.md`, section 4): inside the contact the
+/// pressure is A d^lambda (d the distance from the edge b), outside the gap is A G s^(lambda + 1)
+/// (s the distance beyond b), the local solution of `lamb::edge` for the edge's current speed.
+#[derive(Clone, Copy, Debug)]
+struct EdgeModel {
+    /// The exponent lambda the edge law selects.
+    lambda: f64,
+    /// The gap coefficient G (units 1/mu); unused by the kinematic law.
+    gap: f64,
+    /// Supersonic edge: the two laws coincide, the edge is the geometric one.
+    geometric: bool,
+    /// Whether the free edge is placed inside its cell by the model: below
+    /// `FREE_EDGE_SPEED` times the Rayleigh speed (nearer c_R the gap coefficient of the
+    /// square-root solution vanishes and the edge's position is ill-conditioned).
+    sub_cell: bool,
+}
+
+/// A step's contact: (last contact cell, edge, cell pressures, force).
+type StepSet = (usize, f64, Vec<f64>, f64);
+
+/// Fraction of the Rayleigh speed below which a free (Signorini) edge is placed inside its
+/// cell by the local model; faster free edges are captured cell by cell.
+const FREE_EDGE_SPEED: f64 = 0.8;
+
+impl EdgeModel {
+    /// (1/dx) Int_lo^hi d^lambda dd (0 <= lo <= hi).
+    fn mean_power(&self, lo: f64, hi: f64, dx: f64) -> f64 {
+        let e = self.lambda + 1.0;
+        (hi.powf(e) - lo.powf(e)) / (e * dx)
+    }
+
+    /// For the edge b in cell c (theta = (b - x_c + dx/2)/dx in [0, 1]): the ratio of the
+    /// edge cell's mean pressure to the mean pressure of cell c - 1, and the mean gap over the
+    /// edge cell per unit mean pressure of cell c - 1.
+    fn tie(&self, theta: f64, dx: f64) -> (f64, f64) {
+        let inside = theta * dx;
+        let outside = (1.0 - theta) * dx;
+        let neighbour = self.mean_power(inside, inside + dx, dx);
+        let load = self.mean_power(0.0, inside, dx);
+        let e = self.lambda + 2.0;
+        let gap = self.gap * outside.powf(e) / (e * dx);
+        (load / neighbour, gap / neighbour)
+    }
+}
+
 impl<'a> March<'a> {
     /// A march with cell width dx and time step kappa dx (kappa from the tables), with the
     /// striker's compliance (none for a rigid striker).
@@ -159,9 +208,22 @@ impl<'a> March<'a> {
             dx,
             dt: kappa * dx,
             kcap,
+            edge_gap_scale: None,
             steps: Vec::new(),
             separation: None,
         }
+        .with_default_scale()
+    }
+
+    /// Sets the factor of the edge model's gap coefficient (`None`: no edge model).
+    pub(crate) fn with_edge_gap_scale(mut self, scale: Option<f64>) -> Self {
+        self.edge_gap_scale = scale;
+        self
+    }
+
+    fn with_default_scale(mut self) -> Self {
+        self.edge_gap_scale = self.striker.is_none().then_some(1.0);
+        self
     }
 
     /// Time step.
@@ -254,13 +316,7 @@ impl<'a> March<'a> {
             for j in 0..n {
                 a[i * n + j] = self.current(i, j) + coupling * self.weight(j);
             }
-            let f = self
-                .profile
-                .height(i as f64 * self.dx)
-                .ok_or_else(|| ImpactError::Step {
-                    time: format!("{time:.6}"),
-                    reason: "the contact reaches the end of the profile".into(),
-                })?;
+            let f = self.profile_mean(i, time)?;
             r[i] = h_pred - f - hist.0[i] - hist.1.get(i).copied().unwrap_or(0.0);
         }
         let p = solve_dense(a, r, n).ok_or_else(|| ImpactError::Step {
@@ -315,11 +371,20 @@ impl<'a> March<'a> {
         })?;
         let dxv = self.dx;
         let kin_k = move |b: f64| -> usize { ((b / dxv).ceil() as usize).saturating_sub(1) };
-        let imax = (k0 + 3).max(kin_k(kin_b) + 3).min(self.kcap + 2);
+        // the cell containing an edge b: x_c - dx/2 <= b < x_c + dx/2
+        let edge_cell = move |b: f64| -> usize { (b / dxv + 0.5).floor().max(0.0) as usize };
+        let b_prev = self.steps.last().map(|s| s.b).unwrap_or(0.0);
+        let imax = (k0 + 3)
+            .max(kin_k(kin_b) + 3)
+            .max(edge_cell(b_prev) + 3)
+            .min(self.kcap + 2);
         let hist = self.history(n, imax)?;
+        let model = self.edge_model(kin_b)?;
         let mut set = None;
-        match self.law {
-            EdgeLaw::Kinematic => {
+        let geometric =
+            matches!(self.law, EdgeLaw::Kinematic) || matches!(model, Some(m) if m.geometric);
+        match (geometric, model) {
+            (true, _) => {
                 let mut f_est = 0.0;
                 for _ in 0..50 {
                     let h = h_pred - coupling * f_est;
@@ -327,8 +392,20 @@ impl<'a> March<'a> {
                     if b <= 0.0 {
                         break;
                     }
-                    let k = kin_k(b).min(self.kcap);
-                    let (p, f) = self.solve_set(k, &hist, h_pred, coupling, t)?;
+                    let c = edge_cell(b).min(self.kcap);
+                    let (k, p, f) = match model {
+                        Some(m) if c >= 2 && c <= imax => {
+                            let theta = ((b / dxv + 0.5) - c as f64).clamp(0.0, 1.0);
+                            let (ratio, _) = m.tie(theta, dxv);
+                            let (p, f) = self.solve_tied(c, ratio, &hist, h_pred, coupling, t)?;
+                            (c, p, f)
+                        }
+                        _ => {
+                            let k = kin_k(b).min(self.kcap);
+                            let (p, f) = self.solve_set(k, &hist, h_pred, coupling, t)?;
+                            (k, p, f)
+                        }
+                    };
                     let done = (f - f_est).abs() <= 1e-14 * f.abs();
                     f_est = f;
                     set = Some((k, b, p, f));
@@ -337,7 +414,11 @@ impl<'a> March<'a> {
                     }
                 }
             }
-            EdgeLaw::Signorini => {
+            (false, Some(m)) if m.sub_cell && edge_cell(b_prev) >= 2 => {
+                set =
+                    Some(self.free_edge(m, edge_cell(b_prev), imax, &hist, h_pred, coupling, t)?);
+            }
+            _ => {
                 // active set of whole cells 0..=k, started from the previous step's
                 let mut k = k0.min(self.kcap);
                 let mut tried = vec![false; self.kcap.min(imax) + 2];
@@ -358,10 +439,7 @@ impl<'a> March<'a> {
                         let gap = self.displacement(i, &hist, &p)
                             - (h_pred
                                 - coupling * f
-                                - self
-                                    .profile
-                                    .height(i as f64 * self.dx)
-                                    .unwrap_or(f64::INFINITY));
+                                - self.profile_mean(i, t).unwrap_or(f64::INFINITY));
                         if gap < 0.0 && !tried[i] {
                             k = i;
                             continue;
@@ -437,6 +515,193 @@ impl<'a> March<'a> {
             striker_work,
         });
         Ok(true)
+    }
+
+    /// The mean of the profile over cell i (3-point Gauss-Legendre; cell 0 through its
+    /// right half, the profile being even).
+    fn profile_mean(&self, i: usize, time: f64) -> Result<f64> {
+        let (lo, hi) = if i == 0 {
+            (0.0, 0.5 * self.dx)
+        } else {
+            let x = i as f64 * self.dx;
+            (x - 0.5 * self.dx, x + 0.5 * self.dx)
+        };
+        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+        let u = (0.6f64).sqrt();
+        let mut s = 0.0;
+        for (node, w) in [(-u, 5.0 / 9.0), (0.0, 8.0 / 9.0), (u, 5.0 / 9.0)] {
+            s += w * self
+                .profile
+                .height(mid + half * node)
+                .ok_or_else(|| ImpactError::Step {
+                    time: format!("{time:.6}"),
+                    reason: "the contact reaches the end of the profile".into(),
+                })?;
+        }
+        Ok(0.5 * s)
+    }
+
+    /// The edge's speed (units c1) over the last steps (up to four), from the reported edges
+    /// (the edge at t = 0 is 0); over the first step, from the geometric edge `kin_b` at its
+    /// end.
+    fn edge_speed(&self, kin_b: f64) -> f64 {
+        let n = self.steps.len();
+        if n == 0 {
+            return kin_b / self.dt;
+        }
+        let q = n.min(4);
+        let before = if n > q { self.steps[n - 1 - q].b } else { 0.0 };
+        (self.steps[n - 1].b - before) / (q as f64 * self.dt)
+    }
+
+    /// The local model of the edge cell for the current edge speed and law (`lamb::edge`);
+    /// `None` for the flat punch (its edges sit on cell boundaries).
+    fn edge_model(&self, kin_b: f64) -> Result<Option<EdgeModel>> {
+        let Some(scale) = self.edge_gap_scale else {
+            return Ok(None);
+        };
+        if matches!(self.profile, Profile::Flat { .. }) {
+            return Ok(None);
+        }
+        let hp = self.tables.half_plane();
+        let (sr, m) = (*hp.s_r(), *hp.m());
+        let d = self.edge_speed(kin_b);
+        // a receding or resting edge takes the model of a slowly advancing one (the
+        // static limit), below the Rayleigh speed
+        let mut speed = if d > 0.0 { d } else { d.abs().min(0.5 * sr) };
+        speed = speed.max(1e-6);
+        for c in [sr, m, 1.0] {
+            if (speed - c).abs() <= 1e-8 * c {
+                speed = c * (1.0 - 1e-8);
+            }
+        }
+        let eb = hp.edge_behaviour(speed, self.law)?;
+        let sol = eb
+            .solutions
+            .iter()
+            .find(|s| s.lambda == eb.selected)
+            .cloned()
+            .unwrap_or(lamb::edge::LocalSolution {
+                lambda: eb.selected,
+                gap_coefficient: 0.0,
+                signorini_admissible: true,
+            });
+        Ok(Some(EdgeModel {
+            lambda: eb.selected,
+            gap: sol.gap_coefficient * scale,
+            geometric: eb.range == lamb::edge::SpeedRange::Supersonic,
+            sub_cell: speed < FREE_EDGE_SPEED * sr,
+        }))
+    }
+
+    /// Solves the step with full contact cells 0..c-1 and the edge cell c, whose mean
+    /// pressure is `ratio` times that of cell c - 1: returns (pressures 0..=c, force).
+    fn solve_tied(
+        &self,
+        c: usize,
+        ratio: f64,
+        hist: &(Vec<f64>, Vec<f64>),
+        h_pred: f64,
+        coupling: f64,
+        time: f64,
+    ) -> Result<(Vec<f64>, f64)> {
+        let n = c;
+        let mut a = vec![0.0; n * n];
+        let mut r = vec![0.0; n];
+        for i in 0..n {
+            for j in 0..n {
+                a[i * n + j] = self.current(i, j) + coupling * self.weight(j);
+            }
+            a[i * n + n - 1] += ratio * (self.current(i, c) + coupling * self.weight(c));
+            let f = self.profile_mean(i, time)?;
+            r[i] = h_pred - f - hist.0[i] - hist.1.get(i).copied().unwrap_or(0.0);
+        }
+        let mut p = solve_dense(a, r, n).ok_or_else(|| ImpactError::Step {
+            time: format!("{time:.6}"),
+            reason: "singular contact system".into(),
+        })?;
+        p.push(ratio * p[n - 1]);
+        let force = p.iter().enumerate().map(|(j, v)| self.weight(j) * v).sum();
+        Ok((p, force))
+    }
+
+    /// The free (Signorini) edge inside a cell: the edge cell c carries the local model's
+    /// pressure, and its mean displacement leaves the model's gap over the part beyond the
+    /// edge; the edge is the root of that condition in the cell (regula falsi), the cell
+    /// moving outwards or inwards when the root lies beyond it. Returns (c, b, pressures,
+    /// force).
+    #[allow(clippy::too_many_arguments)]
+    fn free_edge(
+        &self,
+        model: EdgeModel,
+        start: usize,
+        imax: usize,
+        hist: &(Vec<f64>, Vec<f64>),
+        h_pred: f64,
+        coupling: f64,
+        t: f64,
+    ) -> Result<StepSet> {
+        let dx = self.dx;
+        let top = imax.min(self.kcap);
+        let residual = |c: usize, theta: f64| -> Result<(f64, Vec<f64>, f64)> {
+            let (ratio, gap) = model.tie(theta, dx);
+            let (p, f) = self.solve_tied(c, ratio, hist, h_pred, coupling, t)?;
+            let rho = self.displacement(c, hist, &p)
+                - (h_pred - coupling * f - self.profile_mean(c, t)?)
+                - gap * p[c - 1];
+            Ok((rho, p, f))
+        };
+        let mut c = start.clamp(2, top.max(2));
+        let mut tried = vec![false; top + 2];
+        loop {
+            tried[c] = true;
+            let (r1, p1, f1) = residual(c, 1.0)?;
+            if r1 < 0.0 && c < top && !tried[c + 1] {
+                c += 1;
+                continue;
+            }
+            let (r0, p0, f0) = residual(c, 0.0)?;
+            if r0 > 0.0 && c > 2 && !tried[c - 1] {
+                c -= 1;
+                continue;
+            }
+            let edge = |theta: f64| (c as f64 - 0.5 + theta) * dx;
+            if r1 <= 0.0 {
+                return Ok((c, edge(1.0), p1, f1));
+            }
+            if r0 >= 0.0 {
+                return Ok((c, edge(0.0), p0, f0));
+            }
+            // regula falsi (Illinois) on theta in (0, 1)
+            let (mut a, mut fa, mut b, mut fb) = (0.0, r0, 1.0, r1);
+            let mut best = (p0, f0, 0.0);
+            let mut side = 0;
+            for _ in 0..60 {
+                let x = (a * fb - b * fa) / (fb - fa);
+                let (rx, px, fx) = residual(c, x)?;
+                best = (px, fx, x);
+                if rx.abs() <= 1e-15 * (h_pred.abs() + dx) || (b - a) <= 1e-13 {
+                    break;
+                }
+                if (rx > 0.0) == (fb > 0.0) {
+                    b = x;
+                    fb = rx;
+                    if side == -1 {
+                        fa *= 0.5;
+                    }
+                    side = -1;
+                } else {
+                    a = x;
+                    fa = rx;
+                    if side == 1 {
+                        fb *= 0.5;
+                    }
+                    side = 1;
+                }
+            }
+            let (p, f, theta) = best;
+            return Ok((c, edge(theta), p, f));
+        }
     }
 
     /// The Signorini edge inside the last cell: the zero of C (b - x)^(1/2) through the last
