@@ -309,22 +309,10 @@ impl<'a> March<'a> {
         coupling: f64,
         time: f64,
     ) -> Result<(Vec<f64>, f64)> {
-        let n = k + 1;
-        let mut a = vec![0.0; n * n];
-        let mut r = vec![0.0; n];
-        for i in 0..n {
-            for j in 0..n {
-                a[i * n + j] = self.current(i, j) + coupling * self.weight(j);
-            }
-            let f = self.profile_mean(i, time)?;
-            r[i] = h_pred - f - hist.0[i] - hist.1.get(i).copied().unwrap_or(0.0);
-        }
-        let p = solve_dense(a, r, n).ok_or_else(|| ImpactError::Step {
-            time: format!("{time:.6}"),
-            reason: "singular contact system".into(),
-        })?;
-        let force = p.iter().enumerate().map(|(j, v)| self.weight(j) * v).sum();
-        Ok((p, force))
+        // cell k + 1 tied with a zero ratio carries nothing
+        let (mut p, f) = self.solve_tied(k + 1, 0.0, hist, h_pred, coupling, time)?;
+        p.pop();
+        Ok((p, f))
     }
 
     /// The half-plane's and the striker's displacement at x_i at t_n from the histories and
