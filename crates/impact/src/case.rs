@@ -379,6 +379,25 @@ pub struct Run {
     pub coefficient_error: f64,
 }
 
+impl Run {
+    /// Step n (time t_n = n dt, n >= 1), if the march reached it.
+    pub fn step(&self, n: usize) -> Option<&StepState> {
+        n.checked_sub(1).and_then(|i| self.steps.get(i))
+    }
+
+    /// The force at t_n (`docs/impact.md`, section 3): a step's force stands for the middle
+    /// of the step, so the mean of the two steps around t_n (the last step extrapolated from
+    /// the two before it).
+    pub fn force_at(&self, n: usize) -> Option<f64> {
+        let f = |n: usize| self.step(n).map(|s| s.force);
+        match (f(n), f(n + 1)) {
+            (Some(a), Some(b)) => Some(0.5 * (a + b)),
+            (Some(a), None) if n >= 2 => f(n - 1).map(|z| 1.5 * a - 0.5 * z),
+            (a, _) => a,
+        }
+    }
+}
+
 /// The edge's speed range.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage {
@@ -493,27 +512,6 @@ impl Solution {
         Some(Value { value: s0, err })
     }
 
-    fn sample(&self, run: &Run, t: f64, f: impl Fn(&StepState) -> f64) -> Option<f64> {
-        let n = (t / run.dt).round() as usize;
-        (n >= 1).then(|| run.steps.get(n - 1).map(&f)).flatten()
-    }
-
-    /// The force at the step time t_n (`docs/impact.md`, section 3): the step's force
-    /// stands for the middle of the step, so the mean of the two steps around t_n (the last
-    /// step extrapolated from the two before it).
-    fn force_sample(&self, run: &Run, t: f64) -> Option<f64> {
-        let n = (t / run.dt).round() as usize;
-        if n == 0 {
-            return None;
-        }
-        let f = |i: usize| run.steps.get(i).map(|s| s.force);
-        match (f(n - 1), f(n)) {
-            (Some(a), Some(b)) => Some(0.5 * (a + b)),
-            (Some(a), None) if n >= 2 => f(n - 2).map(|z| 1.5 * a - 0.5 * z),
-            (a, _) => a,
-        }
-    }
-
     fn kinetic(&self, v: f64) -> Option<f64> {
         // (1/2) m0 v^2 in units mu R^2 -> over rho c1^2 R^2 = (1/m^2)
         self.mass.map(|mass| 0.5 * mass * v * v * self.m * self.m)
@@ -527,33 +525,26 @@ impl Solution {
         let last_t = fine.steps.last().map(|s| s.t).unwrap_or(0.0);
         let nrep = (last_t / dtr + 1e-9).floor() as usize;
         let times: Vec<f64> = (1..=nrep).map(|i| i as f64 * dtr).collect();
-        type Getter = fn(&StepState) -> f64;
+        // each quantity at step n (time t_n)
+        type Getter = fn(&Run, usize) -> Option<f64>;
         let getters: [Getter; 6] = [
-            |s| s.h,
-            |s| s.v,
-            |s| s.b,
-            |s| s.force,
-            |s| s.ws.first().copied().unwrap_or(0.0),
-            |s| s.striker_work,
+            |r, n| r.step(n).map(|s| s.h),
+            |r, n| r.step(n).map(|s| s.v),
+            |r, n| r.step(n).map(|s| s.b),
+            |r, n| r.force_at(n),
+            |r, n| r.step(n).map(|s| s.ws.first().copied().unwrap_or(0.0)),
+            |r, n| r.step(n).map(|s| s.striker_work),
         ];
         // samples[q][level][i]
         let samples: Vec<Vec<Vec<f64>>> = getters
             .iter()
-            .enumerate()
-            .map(|(q, g)| {
+            .map(|g| {
                 self.runs
                     .iter()
                     .map(|r| {
                         times
                             .iter()
-                            .map(|&t| {
-                                if q == 3 {
-                                    self.force_sample(r, t)
-                                } else {
-                                    self.sample(r, t, g)
-                                }
-                                .unwrap_or(f64::NAN)
-                            })
+                            .map(|&t| g(r, (t / r.dt).round() as usize).unwrap_or(f64::NAN))
                             .collect()
                     })
                     .collect()
@@ -764,9 +755,8 @@ impl Solution {
     pub fn peak_force(&self) -> Option<(f64, f64)> {
         let m2 = self.m * self.m;
         let run = &self.runs[0];
-        run.steps
-            .iter()
-            .filter_map(|s| self.force_sample(run, s.t).map(|f| (f * m2, s.t)))
+        (1..=run.steps.len())
+            .filter_map(|n| run.force_at(n).map(|f| (f * m2, run.steps[n - 1].t)))
             .max_by(|a, b| a.0.total_cmp(&b.0))
     }
 }

@@ -156,6 +156,41 @@ struct EdgeModel {
 /// A step's contact: (last contact cell, edge, cell pressures, force).
 type StepSet = (usize, f64, Vec<f64>, f64);
 
+/// What every trial solve of one step shares.
+struct StepData {
+    /// The half-plane's and the striker's displacements at the cells due to the past steps
+    /// (the striker's empty when rigid).
+    hist: (Vec<f64>, Vec<f64>),
+    /// The profile's mean over the cells 0..=imax (`None` beyond its extent).
+    fbar: Vec<Option<f64>>,
+    /// The penetration at the step's end before the step's own force.
+    h_pred: f64,
+    /// The step's change of penetration per unit force (free striker; 0 when driven).
+    coupling: f64,
+    /// The step's time.
+    t: f64,
+}
+
+impl StepData {
+    /// The profile's mean over cell i.
+    fn fbar(&self, i: usize) -> Result<f64> {
+        self.fbar
+            .get(i)
+            .copied()
+            .flatten()
+            .ok_or_else(|| ImpactError::Step {
+                time: format!("{:.6}", self.t),
+                reason: "the contact reaches the end of the profile".into(),
+            })
+    }
+
+    /// The approach the contact condition asks of cell i, h - mean f_i, less the past
+    /// steps' displacements, for a step force `force`.
+    fn target(&self, i: usize, force: f64) -> Result<f64> {
+        Ok(self.h_pred - self.coupling * force - self.fbar(i)?)
+    }
+}
+
 /// Fraction of the Rayleigh speed below which a free (Signorini) edge is placed inside its
 /// cell by the local model; faster free edges are captured cell by cell.
 const FREE_EDGE_SPEED: f64 = 0.8;
@@ -201,28 +236,22 @@ impl<'a> March<'a> {
         };
         March {
             tables,
-            striker,
             profile,
             motion,
             law,
             dx,
             dt: kappa * dx,
             kcap,
-            edge_gap_scale: None,
+            edge_gap_scale: striker.is_none().then_some(1.0),
+            striker,
             steps: Vec::new(),
             separation: None,
         }
-        .with_default_scale()
     }
 
     /// Sets the factor of the edge model's gap coefficient (`None`: no edge model).
     pub(crate) fn with_edge_gap_scale(mut self, scale: Option<f64>) -> Self {
         self.edge_gap_scale = scale;
-        self
-    }
-
-    fn with_default_scale(mut self) -> Self {
-        self.edge_gap_scale = self.striker.is_none().then_some(1.0);
         self
     }
 
@@ -301,16 +330,9 @@ impl<'a> March<'a> {
     }
 
     /// Solves the step with contact cells 0..=k: returns (pressures, force).
-    fn solve_set(
-        &self,
-        k: usize,
-        hist: &(Vec<f64>, Vec<f64>),
-        h_pred: f64,
-        coupling: f64,
-        time: f64,
-    ) -> Result<(Vec<f64>, f64)> {
+    fn solve_set(&self, d: &StepData, k: usize) -> Result<(Vec<f64>, f64)> {
         // cell k + 1 tied with a zero ratio carries nothing
-        let (mut p, f) = self.solve_tied(k + 1, 0.0, hist, h_pred, coupling, time)?;
+        let (mut p, f) = self.solve_tied(d, k + 1, 0.0)?;
         p.pop();
         Ok((p, f))
     }
@@ -366,7 +388,14 @@ impl<'a> March<'a> {
             .max(kin_k(kin_b) + 3)
             .max(edge_cell(b_prev) + 3)
             .min(self.kcap + 2);
-        let hist = self.history(n, imax)?;
+        let data = StepData {
+            hist: self.history(n, imax)?,
+            fbar: (0..=imax).map(|i| self.profile_mean(i)).collect(),
+            h_pred,
+            coupling,
+            t,
+        };
+        let hist = &data.hist;
         let model = self.edge_model(kin_b)?;
         let mut set = None;
         let geometric =
@@ -385,12 +414,12 @@ impl<'a> March<'a> {
                         Some(m) if c >= 2 && c <= imax => {
                             let theta = ((b / dxv + 0.5) - c as f64).clamp(0.0, 1.0);
                             let (ratio, _) = m.tie(theta, dxv);
-                            let (p, f) = self.solve_tied(c, ratio, &hist, h_pred, coupling, t)?;
+                            let (p, f) = self.solve_tied(&data, c, ratio)?;
                             (c, p, f)
                         }
                         _ => {
                             let k = kin_k(b).min(self.kcap);
-                            let (p, f) = self.solve_set(k, &hist, h_pred, coupling, t)?;
+                            let (p, f) = self.solve_set(&data, k)?;
                             (k, p, f)
                         }
                     };
@@ -403,8 +432,7 @@ impl<'a> March<'a> {
                 }
             }
             (false, Some(m)) if m.sub_cell && edge_cell(b_prev) >= 2 => {
-                set =
-                    Some(self.free_edge(m, edge_cell(b_prev), imax, &hist, h_pred, coupling, t)?);
+                set = Some(self.free_edge(&data, m, edge_cell(b_prev))?);
             }
             _ => {
                 // active set of whole cells 0..=k, started from the previous step's
@@ -412,7 +440,7 @@ impl<'a> March<'a> {
                 let mut tried = vec![false; self.kcap.min(imax) + 2];
                 loop {
                     tried[k] = true;
-                    let (p, f) = self.solve_set(k, &hist, h_pred, coupling, t)?;
+                    let (p, f) = self.solve_set(&data, k)?;
                     if p[k] < 0.0 {
                         if k == 0 {
                             break; // no contact at all
@@ -424,10 +452,9 @@ impl<'a> March<'a> {
                     }
                     let i = k + 1;
                     if i <= imax.min(self.kcap) {
-                        let gap = self.displacement(i, &hist, &p)
-                            - (h_pred
-                                - coupling * f
-                                - self.profile_mean(i, t).unwrap_or(f64::INFINITY));
+                        // beyond the profile's extent the gap is open
+                        let gap = self.displacement(i, hist, &p)
+                            - data.target(i, f).unwrap_or(f64::NEG_INFINITY);
                         if gap < 0.0 && !tried[i] {
                             k = i;
                             continue;
@@ -463,7 +490,7 @@ impl<'a> March<'a> {
             ),
         };
         let (w, ws): (Vec<f64>, Vec<f64>) =
-            (0..=imax).map(|i| self.displacements(i, &hist, &p)).unzip();
+            (0..=imax).map(|i| self.displacements(i, hist, &p)).unzip();
         let ws = if self.striker.is_some() {
             ws
         } else {
@@ -506,8 +533,8 @@ impl<'a> March<'a> {
     }
 
     /// The mean of the profile over cell i (3-point Gauss-Legendre; cell 0 through its
-    /// right half, the profile being even).
-    fn profile_mean(&self, i: usize, time: f64) -> Result<f64> {
+    /// right half, the profile being even); `None` beyond the profile's extent.
+    fn profile_mean(&self, i: usize) -> Option<f64> {
         let (lo, hi) = if i == 0 {
             (0.0, 0.5 * self.dx)
         } else {
@@ -518,15 +545,9 @@ impl<'a> March<'a> {
         let u = (0.6f64).sqrt();
         let mut s = 0.0;
         for (node, w) in [(-u, 5.0 / 9.0), (0.0, 8.0 / 9.0), (u, 5.0 / 9.0)] {
-            s += w * self
-                .profile
-                .height(mid + half * node)
-                .ok_or_else(|| ImpactError::Step {
-                    time: format!("{time:.6}"),
-                    reason: "the contact reaches the end of the profile".into(),
-                })?;
+            s += w * self.profile.height(mid + half * node)?;
         }
-        Ok(0.5 * s)
+        Some(0.5 * s)
     }
 
     /// The edge's speed (units c1) over the last steps (up to four), from the reported edges
@@ -558,25 +579,22 @@ impl<'a> March<'a> {
         // static limit), below the Rayleigh speed
         let mut speed = if d > 0.0 { d } else { d.abs().min(0.5 * sr) };
         speed = speed.max(1e-6);
+        // off the speeds where the local solutions jump (refused by `lamb::edge`)
+        let guard = 10.0 * lamb::edge::SPEED_GUARD;
         for c in [sr, m, 1.0] {
-            if (speed - c).abs() <= 1e-8 * c {
-                speed = c * (1.0 - 1e-8);
+            if (speed - c).abs() <= guard * c {
+                speed = c * (1.0 - guard);
             }
         }
         let eb = hp.edge_behaviour(speed, self.law)?;
-        let sol = eb
+        let gap = eb
             .solutions
             .iter()
             .find(|s| s.lambda == eb.selected)
-            .cloned()
-            .unwrap_or(lamb::edge::LocalSolution {
-                lambda: eb.selected,
-                gap_coefficient: 0.0,
-                signorini_admissible: true,
-            });
+            .map_or(0.0, |s| s.gap_coefficient);
         Ok(Some(EdgeModel {
             lambda: eb.selected,
-            gap: sol.gap_coefficient * scale,
+            gap: gap * scale,
             geometric: eb.range == lamb::edge::SpeedRange::Supersonic,
             sub_cell: speed < FREE_EDGE_SPEED * sr,
         }))
@@ -584,28 +602,19 @@ impl<'a> March<'a> {
 
     /// Solves the step with full contact cells 0..c-1 and the edge cell c, whose mean
     /// pressure is `ratio` times that of cell c - 1: returns (pressures 0..=c, force).
-    fn solve_tied(
-        &self,
-        c: usize,
-        ratio: f64,
-        hist: &(Vec<f64>, Vec<f64>),
-        h_pred: f64,
-        coupling: f64,
-        time: f64,
-    ) -> Result<(Vec<f64>, f64)> {
+    fn solve_tied(&self, d: &StepData, c: usize, ratio: f64) -> Result<(Vec<f64>, f64)> {
         let n = c;
         let mut a = vec![0.0; n * n];
         let mut r = vec![0.0; n];
         for i in 0..n {
             for j in 0..n {
-                a[i * n + j] = self.current(i, j) + coupling * self.weight(j);
+                a[i * n + j] = self.current(i, j) + d.coupling * self.weight(j);
             }
-            a[i * n + n - 1] += ratio * (self.current(i, c) + coupling * self.weight(c));
-            let f = self.profile_mean(i, time)?;
-            r[i] = h_pred - f - hist.0[i] - hist.1.get(i).copied().unwrap_or(0.0);
+            a[i * n + n - 1] += ratio * (self.current(i, c) + d.coupling * self.weight(c));
+            r[i] = d.target(i, 0.0)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(0.0);
         }
         let mut p = solve_dense(a, r, n).ok_or_else(|| ImpactError::Step {
-            time: format!("{time:.6}"),
+            time: format!("{:.6}", d.t),
             reason: "singular contact system".into(),
         })?;
         p.push(ratio * p[n - 1]);
@@ -618,25 +627,13 @@ impl<'a> March<'a> {
     /// edge; the edge is the root of that condition in the cell (regula falsi), the cell
     /// moving outwards or inwards when the root lies beyond it. Returns (c, b, pressures,
     /// force).
-    #[allow(clippy::too_many_arguments)]
-    fn free_edge(
-        &self,
-        model: EdgeModel,
-        start: usize,
-        imax: usize,
-        hist: &(Vec<f64>, Vec<f64>),
-        h_pred: f64,
-        coupling: f64,
-        t: f64,
-    ) -> Result<StepSet> {
+    fn free_edge(&self, d: &StepData, model: EdgeModel, start: usize) -> Result<StepSet> {
         let dx = self.dx;
-        let top = imax.min(self.kcap);
+        let top = (d.fbar.len() - 1).min(self.kcap);
         let residual = |c: usize, theta: f64| -> Result<(f64, Vec<f64>, f64)> {
             let (ratio, gap) = model.tie(theta, dx);
-            let (p, f) = self.solve_tied(c, ratio, hist, h_pred, coupling, t)?;
-            let rho = self.displacement(c, hist, &p)
-                - (h_pred - coupling * f - self.profile_mean(c, t)?)
-                - gap * p[c - 1];
+            let (p, f) = self.solve_tied(d, c, ratio)?;
+            let rho = self.displacement(c, &d.hist, &p) - d.target(c, f)? - gap * p[c - 1];
             Ok((rho, p, f))
         };
         let mut c = start.clamp(2, top.max(2));
@@ -668,7 +665,7 @@ impl<'a> March<'a> {
                 let x = (a * fb - b * fa) / (fb - fa);
                 let (rx, px, fx) = residual(c, x)?;
                 best = (px, fx, x);
-                if rx.abs() <= 1e-15 * (h_pred.abs() + dx) || (b - a) <= 1e-13 {
+                if rx.abs() <= 1e-15 * (d.h_pred.abs() + dx) || (b - a) <= 1e-13 {
                     break;
                 }
                 if (rx > 0.0) == (fb > 0.0) {
