@@ -593,7 +593,7 @@ mod tests {
                 let e = v.get_exp().unwrap_or(0);
                 Float::with_val(prec, 1) << (e - prec as i32)
             };
-            let mut check = |y: Float, x: Float| {
+            let check = |y: Float, x: Float| {
                 let got = Real::atan2(y.clone(), &x);
                 let exact = Float::atan2(y.clone(), &x);
                 assert_eq!(Real::prec(&got), prec);
