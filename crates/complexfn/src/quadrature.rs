@@ -67,7 +67,7 @@ impl<T: Real> QuadValue<T> for T {
         like.zero()
     }
     fn add_scaled(&mut self, v: &Self, w: &T) {
-        *self += v.clone() * w;
+        self.mul_add_assign(v, w);
     }
     fn magnitude(&self) -> T {
         self.clone().abs()
@@ -88,8 +88,8 @@ impl<T: Real> QuadValue<T> for Cx<T> {
         Cx::real(like.zero())
     }
     fn add_scaled(&mut self, v: &Self, w: &T) {
-        self.re += v.re.clone() * w;
-        self.im += v.im.clone() * w;
+        self.re.mul_add_assign(&v.re, w);
+        self.im.mul_add_assign(&v.im, w);
     }
     fn magnitude(&self) -> T {
         self.abs()
@@ -111,7 +111,7 @@ impl<T: Real, const N: usize> QuadValue<T> for [T; N] {
     }
     fn add_scaled(&mut self, v: &Self, w: &T) {
         for (a, b) in self.iter_mut().zip(v.iter()) {
-            *a += b.clone() * w;
+            a.mul_add_assign(b, w);
         }
     }
     /// The largest |component|; a component that is not finite is returned as it is, so
