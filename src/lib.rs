@@ -79,7 +79,7 @@ impl CaseInput {
     /// [`DOUBLE_DOUBLE_DIGITS`] on the paper's construction (either variant).
     pub fn uses_double_double(&self) -> bool {
         self.digits.is_some_and(|d| d <= DOUBLE_DOUBLE_DIGITS)
-            && self.solution.checked_at_two_precisions()
+            && self.solution.is_paper_construction()
     }
     /// The arithmetic of the case, for messages: `f64`, `double-double` or `MPFR`.
     pub fn arithmetic(&self) -> &'static str {
@@ -215,11 +215,11 @@ pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
 /// admissibility checks, when selected, are sign checks made on the f64 twin of the case at
 /// high precision). What the selection leaves out is not computed.
 ///
-/// Every numeric quantity carries its own absolute estimate. With `digits` above
-/// [`DOUBLE_DOUBLE_DIGITS`], the paper's construction is solved at two MPFR precisions
-/// (bits(digits) + 32 and + 64) and each estimate is at least the difference between the
-/// two ([`Solution::checked_at_two_precisions`]); up to that many digits it is solved once,
-/// in double-double arithmetic, with the estimates of that arithmetic.
+/// Every numeric quantity carries its own absolute estimate, from one solve: with `digits`
+/// above [`DOUBLE_DOUBLE_DIGITS`] (or for the genuine solution) at the MPFR precision of
+/// `digits` plus [`GUARD_BITS`], up to that many digits on the paper's construction in
+/// double-double arithmetic. The estimates are the quadratures' own (level doubling,
+/// round-off floors), never optimistic without a second solve (`docs/estimates.md`).
 /// When the indenter speed is given, the inverse solve's uncertainty in alpha is carried
 /// into every quantity through its slope (two f64 rows at nearby alpha).
 pub fn solve(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveReport> {
@@ -253,14 +253,9 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result
             s.p().to_f64(),
         )
     } else {
-        let twice = input.solution.checked_at_two_precisions();
-        let work = if twice { bits + GUARD_BITS } else { bits };
-        let s = build(input, speed, &Float::with_val(work, 0))?;
-        let mut r = SolveReport::selected(&s, input, digits + 10, sel)?;
-        if twice {
-            let lower = build(input, speed, &Float::with_val(bits, 0))?;
-            r.check_against(&SolveReport::selected(&lower, input, digits + 10, sel)?);
-        }
+        // one solve: the estimates of the working precision bound its errors on their own
+        let s = build(input, speed, &Float::with_val(bits, 0))?;
+        let r = SolveReport::selected(&s, input, digits + 10, sel)?;
         (r.rounded(digits, print_floor(digits, bits)), s.p().to_f64())
     };
     if full {

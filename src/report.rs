@@ -640,19 +640,6 @@ impl SolveReport {
         }
     }
 
-    /// Checks this report (solved at the higher precision) against `lower`, the same case
-    /// at fewer bits: every estimate becomes at least the difference between the two, and
-    /// the summary estimate at least V's relative estimate.
-    pub(crate) fn check_against(&mut self, lower: &SolveReport) {
-        for (k, q) in self.quantities_mut() {
-            if let Some(x) = lower.quantity(k) {
-                let diff = (q.to_float(4096) - x.to_float(4096)).abs().to_f64();
-                q.error = q.error.max(diff);
-            }
-        }
-        self.summarise();
-    }
-
     /// The summary estimate: at least V's own relative estimate.
     fn summarise(&mut self) {
         let v = &self.v_over_c1_cot_theta;

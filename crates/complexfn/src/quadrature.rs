@@ -67,7 +67,7 @@ impl<T: Real> QuadValue<T> for T {
         like.zero()
     }
     fn add_scaled(&mut self, v: &Self, w: &T) {
-        *self += v.clone() * w;
+        self.mul_add_assign(v, w);
     }
     fn magnitude(&self) -> T {
         self.clone().abs()
@@ -88,8 +88,8 @@ impl<T: Real> QuadValue<T> for Cx<T> {
         Cx::real(like.zero())
     }
     fn add_scaled(&mut self, v: &Self, w: &T) {
-        self.re += v.re.clone() * w;
-        self.im += v.im.clone() * w;
+        self.re.mul_add_assign(&v.re, w);
+        self.im.mul_add_assign(&v.im, w);
     }
     fn magnitude(&self) -> T {
         self.abs()
@@ -111,7 +111,7 @@ impl<T: Real, const N: usize> QuadValue<T> for [T; N] {
     }
     fn add_scaled(&mut self, v: &Self, w: &T) {
         for (a, b) in self.iter_mut().zip(v.iter()) {
-            *a += b.clone() * w;
+            a.mul_add_assign(b, w);
         }
     }
     /// The largest |component|; a component that is not finite is returned as it is, so
@@ -402,6 +402,10 @@ const MAP_BELOW: f64 = -1.0 / 3.0;
 /// Strongest endpoint exponent the map accepts (kappa up to 10^4); a declared exponent below
 /// it is taken as this one (the mapped integrand then keeps a weak singularity).
 const ALPHA_FLOOR: f64 = -0.9999;
+/// Largest power-map exponent kappa that is rounded up to an integer (see [`tanh_sinh`]).
+/// Up to it, where the exponent range is narrow, the continuation below y_f (at most
+/// 1e-72 for kappa <= 4) stays far below every precision's resolution.
+const INTEGER_KAPPA: f64 = 4.0;
 /// Margin above a type's normal floor below which the distance to a mapped end is not formed
 /// (it keeps |v - a|^alpha and the factors of the integrand clear of subnormal numbers).
 const FLOOR_MARGIN: f64 = 1e20;
@@ -409,10 +413,12 @@ const FLOOR_MARGIN: f64 = 1e20;
 /// Tanh-sinh integral of `f` over [a, b] (a < b), adaptive in the level.
 ///
 /// Strong endpoint singularities declared in `opts` (|v - a|^alpha with alpha < -1/3) are
-/// removed by the substitution v - a = (b - a) y^kappa, kappa = 1/(1 + alpha), with both
+/// removed by the substitution v - a = (b - a) y^kappa, kappa = 1/(1 + alpha) (rounded up to
+/// an integer when that is at most 4, so that the powers are products), with both
 /// distances to the ends of [a, b] recomputed exactly in the original variable
-/// (b - v = -(b - a) expm1(kappa ln1p(-(1 - y)))): the mapped integrand
-/// kappa (b - a)^(1 + alpha) g(v), g = f/|v - a|^alpha, is bounded at y = 0. Two singular ends
+/// (b - v = -(b - a) expm1(kappa ln1p(-(1 - y))), or (b - a)(1 - y)(1 + y + ... + y^(kappa - 1))):
+/// the mapped integrand kappa (b - a)^(1 + alpha) y^(kappa (1 + alpha) - 1) g(v),
+/// g = f/|v - a|^alpha, is bounded at y = 0. Two singular ends
 /// are split at the midpoint. Plain tanh-sinh alone truncates such tails at 2^(-3 prec), which
 /// would lose (2^(-3 prec))^(1 + alpha): 7 percent of the integral at alpha = -0.99 in f64.
 ///
@@ -420,8 +426,9 @@ const FLOOR_MARGIN: f64 = 1e20;
 /// what a type with a narrow exponent range represents (f64: y_f = 0.0067 at alpha = -0.9925,
 /// where |v - a| = 1e-288 |b - a|). There the mapped integrand is taken as its value at y_f:
 /// it equals kappa (b - a)^(1 + alpha) g(a + (b - a) y^kappa) (y to the power
-/// kappa (1 + alpha) - 1 = 0), constant to the relative variation of g over 1e-288 (b - a),
-/// far below the precision. MPFR's exponent range never needs this.
+/// kappa (1 + alpha) - 1 = 0, kappa being unrounded there), constant to the relative
+/// variation of g over 1e-288 (b - a), far below the precision. MPFR's exponent range never
+/// needs this.
 ///
 /// Returns the estimate of the last level and `|S_k - S_{k-1}|` as its error; fails with
 /// [`Error::NoConvergence`] when the finest cached level does not reach `opts.rel_tol`.
@@ -478,14 +485,23 @@ where
     F: FnMut(&Point<T>) -> V,
 {
     let alpha = alpha.max(ALPHA_FLOOR);
+    // kappa = 1/(1 + alpha), rounded up to an integer up to INTEGER_KAPPA: the powers of y
+    // are then products, and the mapped integrand keeps the bounded factor
+    // y^(kappa (1 + alpha) - 1), of non-negative exponent
     let kappa = 1.0 / (1.0 + alpha);
+    let kappa = if kappa.ceil() <= INTEGER_KAPPA {
+        kappa.ceil()
+    } else {
+        kappa
+    };
     let k = a.lit(kappa);
     let len = b.clone() - a;
     let zero = a.zero();
     let one = a.one();
-    // the point and the mapped integrand at y, given y^kappa (b - a) = near
-    let mut mapped = |y: &T, one_minus_y: &T, near: T| -> V {
-        let far = -((-one_minus_y.clone()).ln_1p() * &k).exp_m1() * &len;
+    let kappa_int = (kappa.fract() == 0.0).then_some(kappa as u32);
+    // the point and the mapped integrand at y, given near = y^kappa (b - a) and
+    // far = (1 - y^kappa) (b - a)
+    let mut mapped = |y: &T, near: T, far: T| -> V {
         // dv/dy = kappa len y^(kappa - 1) = kappa near/y
         let jac = near.clone() * &k / y.clone();
         let p = if left {
@@ -523,6 +539,36 @@ where
             (a.lit(y_f), a.lit(near_f))
         });
     let mut frozen: Option<V> = None;
+    // (y^kappa, 1 - y^kappa), each with full relative accuracy (1 - y exact from the offsets)
+    let powers = |y: &T, one_minus_y: &T| -> (T, T) {
+        if let Some(n) = kappa_int {
+            // y^n, and 1 - y^n = (1 - y)(1 + y + ... + y^(n - 1)): positive terms only
+            let mut yn = y.clone();
+            let mut sum = one.clone();
+            for _ in 1..n {
+                yn *= y;
+                sum *= y;
+                sum += 1.0;
+            }
+            return (yn, sum * one_minus_y);
+        }
+        // kappa ln y, with ln y from 1 - y where y is close to 1
+        let z = if y.to_f64() < 0.5 {
+            y.clone().ln()
+        } else {
+            (-one_minus_y.clone()).ln_1p()
+        } * &k;
+        if z.to_f64() < -0.7 {
+            // y^kappa < 1/2: 1 - y^kappa > 1/2 without cancellation
+            let yk = z.exp();
+            let rest = one.clone() - &yk;
+            (yk, rest)
+        } else {
+            // y^kappa >= 1/2: 1 - y^kappa = -expm1(kappa ln y)
+            let e = z.exp_m1();
+            (e.clone() + 1.0, -e)
+        }
+    };
     tanh_sinh_plain(&zero, &one, opts.without_ends(), |q: &Point<T>| {
         // y = distance from the singular end, normalised; 1 - y exactly from the offsets
         let (y, one_minus_y) = (&q.from_a, &q.to_b);
@@ -532,18 +578,22 @@ where
         if let Some((y_f, near_f)) = &floor {
             if y < y_f {
                 return frozen
-                    .get_or_insert_with(|| mapped(y_f, &(one.clone() - y_f), near_f.clone()))
+                    .get_or_insert_with(|| {
+                        let far = powers(y_f, &(one.clone() - y_f)).1 * &len;
+                        mapped(y_f, near_f.clone(), far)
+                    })
                     .clone();
             }
         }
-        let near = (y.clone().ln() * &k).exp() * &len;
+        let (yk, rest) = powers(y, one_minus_y);
+        let near = yk * &len;
         if near == 0.0 {
             // y^kappa underflowed (only for an interval shorter than the continuation's
             // margin above the normal floor): the mapped integrand is bounded there and the
             // node's weight is below the underflow threshold.
             return V::zero_like(a);
         }
-        mapped(y, one_minus_y, near)
+        mapped(y, near, rest * &len)
     })
 }
 
@@ -608,6 +658,9 @@ where
     let mut cut_neg = 0usize;
     let mut small_pos = 0;
     let mut small_neg = 0;
+    // the largest t at which a term was above the tail threshold, per side
+    let mut big_pos = 0.0_f64;
+    let mut big_neg = 0.0_f64;
     let lvl0 = rule.level(0);
     for (j, node) in lvl0.iter().enumerate() {
         let skip =
@@ -624,14 +677,20 @@ where
         if !done_p {
             cut_pos = j;
             small_pos = if tp < thr { small_pos + 1 } else { 0 };
+            if small_pos == 0 {
+                big_pos = j as f64;
+            }
         }
         if !done_n {
             cut_neg = j;
             small_neg = if j > 0 && tn < thr { small_neg + 1 } else { 0 };
+            if small_neg == 0 {
+                big_neg = j as f64;
+            }
         }
     }
-    let t_pos = cut_pos as f64 + 0.5;
-    let t_neg = cut_neg as f64 + 0.5;
+    let mut t_pos = cut_pos as f64 + 0.5;
+    let mut t_neg = cut_neg as f64 + 0.5;
     let mut sum = acc; // sum with step h = 1
     let mut prev: Option<V> = None;
     let mut err = f64::INFINITY;
@@ -641,6 +700,7 @@ where
     for k in 1..=rule.max_level() {
         let h = 0.5_f64.powi(k as i32);
         let mut acc = V::zero_like(a);
+        let (mut run_pos, mut run_neg) = (0, 0);
         for (i, node) in rule.level(k).iter().enumerate() {
             let t = (2 * i + 1) as f64 * h;
             let sp = t > t_pos;
@@ -651,7 +711,33 @@ where
             if node.one_minus_x.clone() * &half < min_offset.clone() * &half.clone().abs() * 2.0 {
                 break;
             }
-            eval_pair(node, &mut acc, &mut mag, sp, sn);
+            let (tp, tn) = eval_pair(node, &mut acc, &mut mag, sp, sn);
+            // Beyond the last term above the threshold the tail decays double-exponentially:
+            // two consecutive negligible terms there end this side's tail for this and later
+            // levels (as two do at level 0).
+            let thr = mag.clone() * &tail_drop;
+            if !sp {
+                if !(tp < thr) {
+                    big_pos = big_pos.max(t);
+                    run_pos = 0;
+                } else if t > big_pos {
+                    run_pos += 1;
+                    if run_pos == 2 {
+                        t_pos = t;
+                    }
+                }
+            }
+            if !sn {
+                if !(tn < thr) {
+                    big_neg = big_neg.max(t);
+                    run_neg = 0;
+                } else if t > big_neg {
+                    run_neg += 1;
+                    if run_neg == 2 {
+                        t_neg = t;
+                    }
+                }
+            }
         }
         // S_k = S_{k-1}/2 + h * new, all times (b-a)/2 at the end
         let hk = a.lit(h);

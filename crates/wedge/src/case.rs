@@ -221,20 +221,25 @@ impl<T: Real> Case<T> {
     /// H(v) = v^(1 - 2 Omega(v)) (v^2 - p^2)^(-1/2 + Omega(v)) e^(b(v)).
     /// For v >= m the integral form of Lambda0 is used. `v_minus_p` is v - p to full
     /// relative accuracy.
+    ///
+    /// With q = v^2 - p^2, both are evaluated as H/v = exp(E ln(q/v^2) + c)/sqrt(q)
+    /// (E = Omega(v) and c = b(v) for v < m; E = Omega0 and c = Lambda0(v) for v >= m):
+    /// one logarithm, of q/v^2 = 1 - p^2/v^2 in (0, 1), which keeps its relative accuracy
+    /// however close v is to p.
     pub fn h_over_v_outside(&self, v: &T, v_minus_p: &T) -> T {
         let s = v.clone().sqr();
         let vp = v_minus_p.clone() * (v.clone() + &self.p);
-        if v < self.m() {
+        let log = (vp.clone() / &s).ln();
+        let arg = if v < self.m() {
             let om = self.omega.omega(v);
             let om_rel = om.clone() - self.omega.omega0();
             let b = self.inner.b_with(&self.omega, &s, &om_rel);
-            let e = om.clone() - 0.5;
-            (v.clone().ln() * (om * -2.0) + vp.ln() * e + b).exp()
+            log * om + b
         } else {
-            let o0 = self.omega0();
             let lam = self.inner.lambda0_real_outside(&s);
-            (v.clone().ln() * (o0.clone() * -2.0) + vp.ln() * (o0 - 0.5) + lam).exp()
-        }
+            log * self.omega.omega0() + lam
+        };
+        arg.exp() / vp.sqrt()
     }
 
     /// X(v) = v^(1 - 2 Omega) (p^2 - v^2)^(-1/2 + Omega) e^(b(v)) on the contact 0 < v < p, the

@@ -373,14 +373,15 @@ pub(crate) struct TanForm<T> {
 /// The nearest singularity of omega(u) on the real axis is the branch point u = m^2, which
 /// lies on the Bernstein ellipse of parameter rho = a + sqrt(a^2 - 1), a = 2 m^2/p^2 - 1, of
 /// [0, p^2]; the rule's error then falls like rho^(-2n), so n = prec ln 2/(2 ln rho) nodes
-/// reach the working precision. A margin of 25 percent plus 8 nodes covers the prefactor;
-/// the doubling test of [`InnerRule::new`] confirms it (and doubles if a complex singularity
-/// of the arctangent lies closer).
+/// reach the working precision. A margin of 10 percent plus 4 nodes covers the prefactor
+/// (the estimate is sharp: at 365 bits and p = 0.3, n itself already agrees with 2n to the
+/// working precision); the doubling test of [`InnerRule::new`] confirms it (and doubles if a
+/// complex singularity of the arctangent lies closer).
 pub fn predicted_nodes(m: f64, p: f64, prec: u32) -> usize {
     let a = 2.0 * (m / p).powi(2) - 1.0;
     let rho = a + (a * a - 1.0).max(0.0).sqrt();
     let n = f64::from(prec) * std::f64::consts::LN_2 / (2.0 * rho.ln().max(1e-3));
-    ((1.25 * n).ceil() as usize + 8).clamp(16, 4096)
+    ((1.1 * n).ceil() as usize + 4).clamp(16, 4096)
 }
 
 /// Omega - Omega0 tabulated on a Gauss-Legendre rule in u over [0, p^2]: the one table behind
@@ -390,6 +391,10 @@ pub struct InnerRule<T> {
     p2: T,
     /// (u_j, w_j, omega(u_j)) with omega = Omega - Omega0.
     nodes: Vec<(T, T, T)>,
+    /// w_j omega(u_j), the numerators of the unsubtracted sums.
+    w_om: Vec<T>,
+    /// w_j in f64: the node spacing that decides where a divided difference is needed.
+    w_f64: Vec<f64>,
     /// tan(pi Omega) in parts at each node, for the divided differences of nodes close to the
     /// evaluation point (empty when Omega = 0).
     forms: Vec<TanForm<T>>,
@@ -413,6 +418,8 @@ impl<T: CachedRules> InnerRule<T> {
             return Ok(InnerRule {
                 p2,
                 nodes: Vec::new(),
+                w_om: Vec::new(),
+                w_f64: Vec::new(),
                 forms: Vec::new(),
                 error: 0.0,
             });
@@ -466,9 +473,13 @@ impl<T: CachedRules> InnerRule<T> {
                 (u, w.clone() * &half, om)
             })
             .collect();
+        let w_om = nodes.iter().map(|(_, w, om)| om.clone() * w).collect();
+        let w_f64 = nodes.iter().map(|(_, w, _)| w.to_f64()).collect();
         Ok(InnerRule {
             p2: p2.clone(),
             nodes,
+            w_om,
+            w_f64,
             forms,
             error: f64::INFINITY,
         })
@@ -507,23 +518,27 @@ impl<T: Real> InnerRule<T> {
     /// (up to 1e-10 in f64 without care); there the divided difference is formed without
     /// cancellation (`OmegaFn::divided_difference`), so every term keeps the working
     /// precision.
+    ///
+    /// The sum runs in place (two temporaries for all terms); which form a term takes is
+    /// decided in f64 (|u_j - s| against w_j), as either form is exact there.
     pub fn b_with(&self, omega: &OmegaFn<T>, s: &T, om_s: &T) -> T {
         let mut acc = s.zero();
         let mut s_form: Option<TanForm<T>> = None;
         let mut d = s.zero();
-        for (j, (u, w, om)) in self.nodes.iter().enumerate() {
+        let mut t = s.zero();
+        for (j, ((u, w, om), &w_f)) in self.nodes.iter().zip(&self.w_f64).enumerate() {
             d.clone_from(u);
             d -= s;
-            if d.clone().abs() < *w {
+            if d.to_f64().abs() < w_f {
                 let sf = s_form.get_or_insert_with(|| omega.tan_form(s));
                 acc += omega.divided_difference(&self.forms[j], sf) * w;
                 continue;
             }
-            let mut t = om.clone();
+            t.clone_from(om);
             t -= om_s;
             t *= w;
             t /= &d;
-            acc += t;
+            acc += &t;
         }
         acc
     }
@@ -531,17 +546,23 @@ impl<T: Real> InnerRule<T> {
     /// S0 = b(0), eq (44).
     pub fn s0(&self) -> T {
         let mut acc = self.p2.zero();
-        for (u, w, om) in &self.nodes {
-            acc += om.clone() * w / u;
+        for ((u, _, _), w_om) in self.nodes.iter().zip(&self.w_om) {
+            acc += w_om.clone() / u;
         }
         acc
     }
 
-    /// Lambda0 at a real s = v^2 > p^2 (no subtraction; used for v >= m).
+    /// Lambda0 at a real s = v^2 > p^2 (no subtraction; used for v >= m), summed in place.
     pub fn lambda0_real_outside(&self, s: &T) -> T {
         let mut acc = s.zero();
-        for (u, w, om) in &self.nodes {
-            acc += om.clone() * w / (u.clone() - s);
+        let mut d = s.zero();
+        let mut t = s.zero();
+        for ((u, _, _), w_om) in self.nodes.iter().zip(&self.w_om) {
+            d.clone_from(u);
+            d -= s;
+            t.clone_from(w_om);
+            t /= &d;
+            acc += &t;
         }
         acc
     }

@@ -266,11 +266,10 @@ pub enum Solution {
 }
 
 impl Solution {
-    /// Whether a high-precision solve of this variant is confirmed by a second solve at 32
-    /// more bits: the paper's construction (`paper`, `as-printed`), whose estimates are the
-    /// quadratures' own; not the genuine solution, whose estimates come from its basis sizes
-    /// (a second solve would double the cost of its dominant part without a better bound).
-    pub fn checked_at_two_precisions(self) -> bool {
+    /// Whether this variant is the paper's construction (`paper`, `as-printed`), whose
+    /// estimates are the quadratures' own; not the genuine solution, whose estimates come
+    /// from its basis sizes.
+    pub fn is_paper_construction(self) -> bool {
         self != Solution::Genuine
     }
 

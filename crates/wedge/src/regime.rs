@@ -59,6 +59,10 @@ pub struct Apex<T> {
     pub constant: T,
     /// See `constant`.
     pub coefficient: T,
+    /// Estimated absolute error of `constant` from its quadratures and the round-off of the
+    /// sum that forms it (0 where it is exact: Omega0 = 0); the matching's relative error
+    /// comes on top.
+    pub constant_error: f64,
 }
 
 impl<T: CachedRules> Case<T> {
@@ -121,10 +125,11 @@ impl<T: CachedRules> Case<T> {
                 amplitude: c.clone(),
                 constant: p.zero(),
                 coefficient: c,
+                constant_error: 0.0,
             });
         }
         let a = self.power_coefficient()?;
-        let c = self.apex_constant()?;
+        let (c, constant_error) = self.apex_constant()?;
         let (exponent, amplitude) = match regime {
             ApexRegime::Power => (o0 * 2.0, a.clone()),
             _ => (p.zero(), c.clone()),
@@ -135,6 +140,7 @@ impl<T: CachedRules> Case<T> {
             amplitude,
             constant: c,
             coefficient: a,
+            constant_error,
         })
     }
 
@@ -155,7 +161,7 @@ impl<T: CachedRules> Case<T> {
     /// c0 = e^(S0) cos(pi Omega0) p^(-1 + 2 Omega0); the apex part is integrated with the
     /// leading term subtracted (the integrand is only weakly integrable for Omega0 near 0, and
     /// not integrable for Omega0 > 0). For Omega0 < 0, C = sigma(0).
-    fn apex_constant(&self) -> Result<T> {
+    fn apex_constant(&self) -> Result<(T, f64)> {
         let p = self.p().clone();
         let o0 = self.omega0();
         let q = self.q_hat()?;
@@ -186,6 +192,13 @@ impl<T: CachedRules> Case<T> {
         // Int_0^p (g - c0 v^e) = lower + upper - c0 Int_{p/4}^p v^e, which with the
         // -c0 p^(-2 Omega0)/(2 Omega0) of C leaves -c0 (p/4)^(-2 Omega0)/(2 Omega0):
         let lead = c0 * quarter.powf(&(o0.clone() * -2.0)) / (o0 * -2.0);
-        Ok(-(q * (lower.value + upper.value + lead)))
+        // the three parts may cancel: their quadrature errors (with the margin of 4 the
+        // matching uses) and 16 eps of their magnitudes
+        let size =
+            (lower.value.clone().abs() + upper.value.clone().abs() + lead.clone().abs()).to_f64();
+        let q_abs = q.to_f64().abs();
+        let error =
+            q_abs * (4.0 * (lower.error + upper.error) + 16.0 * p.epsilon().to_f64() * size);
+        Ok((-(q * (lower.value + upper.value + lead)), error))
     }
 }

@@ -215,6 +215,10 @@ impl<T: CachedRules> ContactSolution<T> for Case<T> {
         let mut a = self.estimated(amplitude)?;
         let rel = self.inverse_omega0_conditioning() + self.s0_conditioning();
         a.error += 2.0 * rel * a.value.to_f64().abs();
+        if regime == ApexRegime::Finite {
+            // the finite amplitude is the apex constant, a sum of quadratures
+            a.error += Case::apex(self)?.constant_error;
+        }
         Ok(ApexLeading {
             regime,
             exponent,
