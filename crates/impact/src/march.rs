@@ -151,6 +151,27 @@ struct EdgeModel {
     /// `FREE_EDGE_SPEED` times the Rayleigh speed (nearer c_R the gap coefficient of the
     /// square-root solution vanishes and the edge's position is ill-conditioned).
     sub_cell: bool,
+    /// (1 - nu)/pi: the static kernel's factor, w = -(1 - nu)/(pi mu) Int p(xi) ln|x - xi| dxi
+    /// (units mu = 1), for the shape correction of the free edge's condition; scaled like the
+    /// gap for a striker of the half-plane's own wave speeds (the two bodies' compliances add).
+    static_factor: f64,
+}
+
+/// Nodes and weights of a rule on [0, 1].
+type UnitRule = Vec<(f64, f64)>;
+
+/// Gauss-Legendre nodes and weights on [0, 1]: 16 points (pieces ending on a kink or on the
+/// edge's power) and 6 (smooth pieces).
+fn unit_rules() -> &'static (UnitRule, UnitRule) {
+    static RULES: std::sync::OnceLock<(UnitRule, UnitRule)> = std::sync::OnceLock::new();
+    RULES.get_or_init(|| {
+        let unit = |n: usize| -> Vec<(f64, f64)> {
+            complexfn::quadrature::gauss_legendre_rule::<f64>(n, 53)
+                .map(|r| r.iter().map(|(u, w)| (0.5 * (u + 1.0), 0.5 * w)).collect())
+                .unwrap_or_default()
+        };
+        (unit(16), unit(6))
+    })
 }
 
 /// A step's contact: (last contact cell, edge, cell pressures, force).
@@ -204,16 +225,93 @@ impl EdgeModel {
 
     /// For the edge b in cell c (theta = (b - x_c + dx/2)/dx in [0, 1]): the ratio of the
     /// edge cell's mean pressure to the mean pressure of cell c - 1, and the mean gap over the
-    /// edge cell per unit mean pressure of cell c - 1.
-    fn tie(&self, theta: f64, dx: f64) -> (f64, f64) {
+    /// edge cell per unit mean pressure of cell c - 1 that the cells' constant pressures must
+    /// leave there: the model's gap less the shape correction of the c + 1 cells 0..=c
+    /// (`docs/impact.md`, section 4; the correction only for a free edge, `with_shape`).
+    fn tie(&self, theta: f64, dx: f64, c: usize, with_shape: bool) -> (f64, f64) {
         let inside = theta * dx;
         let outside = (1.0 - theta) * dx;
         let neighbour = self.mean_power(inside, inside + dx, dx);
         let load = self.mean_power(0.0, inside, dx);
         let e = self.lambda + 2.0;
-        let gap = self.gap * outside.powf(e) / (e * dx);
+        let mut gap = self.gap * outside.powf(e) / (e * dx);
+        if with_shape {
+            gap -= self.static_factor * dx.powf(self.lambda + 1.0) * self.shape_defect(theta, c);
+        }
         (load / neighbour, gap / neighbour)
     }
+
+    /// The shape defect (`docs/impact.md`, section 4), dx = 1: with d the distance from the
+    /// edge into the contact, the edge cell d in [theta - 1, theta] and its neighbours
+    /// j = 1..=cells behind it, the mean over the edge cell of
+    /// -Int (p - pbar) ln|d - xi| dxi for p = d^lambda (d > 0) and pbar its mean on each
+    /// cell: the part of the local solution's displacement there that the cells' constant
+    /// pressures miss (the static kernel without its factor).
+    fn shape_defect(&self, theta: f64, cells: usize) -> f64 {
+        let lam = self.lambda;
+        // primitive of ln|u|
+        let f = |u: f64| if u == 0.0 { 0.0 } else { u * u.abs().ln() - u };
+        // minus the mean over the edge cell of ln|d - xi|
+        let kbar = |xi: f64| f(theta - 1.0 - xi) - f(theta - xi);
+        let power = |d: f64| if d > 0.0 { d.powf(lam) } else { 0.0 };
+        let prim = |d: f64| {
+            if d > 0.0 {
+                d.powf(lam + 1.0) / (lam + 1.0)
+            } else {
+                0.0
+            }
+        };
+        let (clustered_rule, smooth_rule) = unit_rules();
+        // Int_a^b (p - pbar) kbar, clustered at both ends (x = end + (mid - end) u^2): the
+        // pieces touching the edge cell's ends (kinks of kbar) or the edge (d^lambda)
+        let clustered = |a: f64, b: f64, pbar: f64| -> f64 {
+            let mid = 0.5 * (a + b);
+            let mut s = 0.0;
+            for (end, dir) in [(a, mid - a), (b, mid - b)] {
+                for &(u, w) in clustered_rule {
+                    let x = end + dir * u * u;
+                    s += (power(x) - pbar) * kbar(x) * w * 2.0 * dir.abs() * u;
+                }
+            }
+            s
+        };
+        let smooth = |a: f64, b: f64, pbar: f64| -> f64 {
+            smooth_rule
+                .iter()
+                .map(|&(u, w)| {
+                    let x = a + (b - a) * u;
+                    (power(x) - pbar) * kbar(x) * w * (b - a)
+                })
+                .sum()
+        };
+        let mut total = 0.0;
+        for j in 0..=cells {
+            let (a, b) = (theta + j as f64 - 1.0, theta + j as f64);
+            let pbar = prim(b) - prim(a);
+            total += match j {
+                0 if theta > 0.0 => clustered(a, 0.0, pbar) + clustered(0.0, b, pbar),
+                0 => clustered(a, b, pbar),
+                1 => clustered(a, b, pbar),
+                _ => smooth(a, b, pbar),
+            };
+        }
+        total
+    }
+}
+
+/// The static half-plane's displacement under a uniform load: the mean over [xa, xb] of
+/// -Int_sa^sb ln|x - xi| dxi in closed form (the second primitive of ln|u| at the corners),
+/// for the test of the shape defect.
+#[cfg(test)]
+fn static_cell_mean(xa: f64, xb: f64, sa: f64, sb: f64) -> f64 {
+    let g = |u: f64| {
+        if u == 0.0 {
+            0.0
+        } else {
+            0.5 * u * u * u.abs().ln() - 0.75 * u * u
+        }
+    };
+    -(g(xb - sa) - g(xa - sa) - g(xb - sb) + g(xa - sb)) / (xb - xa)
 }
 
 impl<'a> March<'a> {
@@ -413,7 +511,7 @@ impl<'a> March<'a> {
                     let (k, p, f) = match model {
                         Some(m) if c >= 2 && c <= imax => {
                             let theta = ((b / dxv + 0.5) - c as f64).clamp(0.0, 1.0);
-                            let (ratio, _) = m.tie(theta, dxv);
+                            let (ratio, _) = m.tie(theta, dxv, c, false);
                             let (p, f) = self.solve_tied(&data, c, ratio)?;
                             (c, p, f)
                         }
@@ -597,6 +695,7 @@ impl<'a> March<'a> {
             gap: gap * scale,
             geometric: eb.range == lamb::edge::SpeedRange::Supersonic,
             sub_cell: speed < FREE_EDGE_SPEED * sr,
+            static_factor: scale * (1.0 - hp.poisson()) / std::f64::consts::PI,
         }))
     }
 
@@ -631,7 +730,7 @@ impl<'a> March<'a> {
         let dx = self.dx;
         let top = (d.fbar.len() - 1).min(self.kcap);
         let residual = |c: usize, theta: f64| -> Result<(f64, Vec<f64>, f64)> {
-            let (ratio, gap) = model.tie(theta, dx);
+            let (ratio, gap) = model.tie(theta, dx, c, true);
             let (p, f) = self.solve_tied(d, c, ratio)?;
             let rho = self.displacement(c, &d.hist, &p) - d.target(c, f)? - gap * p[c - 1];
             Ok((rho, p, f))
@@ -704,5 +803,86 @@ impl<'a> March<'a> {
             xk + 0.5 * dx
         };
         b.clamp(xk, xk + dx)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The shape defect for lambda = 0 (a uniform pressure behind the edge), where only the
+    /// edge cell's constant misses anything, against the closed-form static cell means.
+    #[test]
+    fn shape_defect_of_a_uniform_pressure_is_the_closed_form() {
+        let model = EdgeModel {
+            lambda: 0.0,
+            gap: 0.0,
+            geometric: false,
+            sub_cell: true,
+            static_factor: 1.0,
+        };
+        for theta in [0.05, 0.37, 0.5, 0.8, 0.999] {
+            let (a, b) = (theta - 1.0, theta);
+            let want = -theta * static_cell_mean(a, b, a, 0.0)
+                + (1.0 - theta) * static_cell_mean(a, b, 0.0, b);
+            for cells in [0, 3, 20] {
+                let got = model.shape_defect(theta, cells);
+                assert!(
+                    (got - want).abs() <= 1e-9 * want.abs().max(1e-3),
+                    "theta = {theta}, cells = {cells}: {got} against {want}"
+                );
+            }
+        }
+    }
+
+    /// For the square-root edge the defect converges in the number of cells behind the edge
+    /// (the cells' dipoles decay like d^(lambda - 2)), and its quadrature agrees with a
+    /// brute-force midpoint rule.
+    #[test]
+    fn shape_defect_of_the_square_root_edge() {
+        let model = EdgeModel {
+            lambda: 0.5,
+            gap: 0.0,
+            geometric: false,
+            sub_cell: true,
+            static_factor: 1.0,
+        };
+        let theta = 0.3;
+        // brute force over the edge cell and two cells behind it
+        let n = 20000;
+        let kbar = |xi: f64| {
+            let m = 400;
+            -(0..m)
+                .map(|q| {
+                    let d = theta - 1.0 + (q as f64 + 0.5) / m as f64;
+                    (d - xi).abs().ln()
+                })
+                .sum::<f64>()
+                / m as f64
+        };
+        let mut want = 0.0;
+        for j in 0..3 {
+            let (a, b) = (theta + j as f64 - 1.0, theta + j as f64);
+            let prim = |d: f64| if d > 0.0 { d.powf(1.5) / 1.5 } else { 0.0 };
+            let pbar = prim(b) - prim(a);
+            for q in 0..n {
+                let xi = a + (q as f64 + 0.5) / n as f64;
+                let p = if xi > 0.0 { xi.sqrt() } else { 0.0 };
+                want += (p - pbar) * kbar(xi) / n as f64;
+            }
+        }
+        let got = model.shape_defect(theta, 2);
+        assert!(
+            (got - want).abs() < 2e-5 * want.abs(),
+            "{got} against {want}"
+        );
+        let (d20, d40, d80) = (
+            model.shape_defect(theta, 20),
+            model.shape_defect(theta, 40),
+            model.shape_defect(theta, 80),
+        );
+        // tail ~ cells^(-1/2): differences shrink by about sqrt 2
+        let ratio = (d40 - d20) / (d80 - d40);
+        assert!((ratio - 2f64.sqrt()).abs() < 0.1, "tail ratio {ratio}");
     }
 }
