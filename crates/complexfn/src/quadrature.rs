@@ -410,6 +410,32 @@ const INTEGER_KAPPA: f64 = 4.0;
 /// (it keeps |v - a|^alpha and the factors of the integrand clear of subnormal numbers).
 const FLOOR_MARGIN: f64 = 1e20;
 
+/// One side's tail of a tanh-sinh sum beyond level 0: where its terms stop mattering.
+struct Tail {
+    /// The largest t at which a term was above the tail threshold.
+    big: f64,
+    /// The t beyond which the side is not evaluated.
+    end: f64,
+    /// Consecutive negligible terms beyond `big` on the current level.
+    run: usize,
+}
+
+impl Tail {
+    /// Records the term at t: two consecutive negligible terms beyond the last large one end
+    /// the tail there, for this and the later levels.
+    fn observe(&mut self, t: f64, negligible: bool) {
+        if !negligible {
+            self.big = self.big.max(t);
+            self.run = 0;
+        } else if t > self.big {
+            self.run += 1;
+            if self.run == 2 {
+                self.end = t;
+            }
+        }
+    }
+}
+
 /// Tanh-sinh integral of `f` over [a, b] (a < b), adaptive in the level.
 ///
 /// Strong endpoint singularities declared in `opts` (|v - a|^alpha with alpha < -1/3) are
@@ -689,8 +715,16 @@ where
             }
         }
     }
-    let mut t_pos = cut_pos as f64 + 0.5;
-    let mut t_neg = cut_neg as f64 + 0.5;
+    let mut pos = Tail {
+        big: big_pos,
+        end: cut_pos as f64 + 0.5,
+        run: 0,
+    };
+    let mut neg = Tail {
+        big: big_neg,
+        end: cut_neg as f64 + 0.5,
+        run: 0,
+    };
     let mut sum = acc; // sum with step h = 1
     let mut prev: Option<V> = None;
     let mut err = f64::INFINITY;
@@ -700,11 +734,11 @@ where
     for k in 1..=rule.max_level() {
         let h = 0.5_f64.powi(k as i32);
         let mut acc = V::zero_like(a);
-        let (mut run_pos, mut run_neg) = (0, 0);
+        (pos.run, neg.run) = (0, 0);
         for (i, node) in rule.level(k).iter().enumerate() {
             let t = (2 * i + 1) as f64 * h;
-            let sp = t > t_pos;
-            let sn = t > t_neg;
+            let sp = t > pos.end;
+            let sn = t > neg.end;
             if sp && sn {
                 break;
             }
@@ -717,26 +751,10 @@ where
             // levels (as two do at level 0).
             let thr = mag.clone() * &tail_drop;
             if !sp {
-                if !(tp < thr) {
-                    big_pos = big_pos.max(t);
-                    run_pos = 0;
-                } else if t > big_pos {
-                    run_pos += 1;
-                    if run_pos == 2 {
-                        t_pos = t;
-                    }
-                }
+                pos.observe(t, tp < thr);
             }
             if !sn {
-                if !(tn < thr) {
-                    big_neg = big_neg.max(t);
-                    run_neg = 0;
-                } else if t > big_neg {
-                    run_neg += 1;
-                    if run_neg == 2 {
-                        t_neg = t;
-                    }
-                }
+                neg.observe(t, tn < thr);
             }
         }
         // S_k = S_{k-1}/2 + h * new, all times (b-a)/2 at the end

@@ -9,7 +9,7 @@
 use crate::error::{ImpactError, Result};
 use crate::profile::Profile;
 use crate::striker::Compliance;
-use crate::tables::Tables;
+use crate::tables::{ShapeRules, Tables};
 
 /// How the penetration evolves.
 #[derive(Clone, Debug)]
@@ -157,23 +157,6 @@ struct EdgeModel {
     static_factor: f64,
 }
 
-/// Nodes and weights of a rule on [0, 1].
-type UnitRule = Vec<(f64, f64)>;
-
-/// Gauss-Legendre nodes and weights on [0, 1]: 16 points (pieces ending on a kink or on the
-/// edge's power) and 6 (smooth pieces).
-fn unit_rules() -> &'static (UnitRule, UnitRule) {
-    static RULES: std::sync::OnceLock<(UnitRule, UnitRule)> = std::sync::OnceLock::new();
-    RULES.get_or_init(|| {
-        let unit = |n: usize| -> Vec<(f64, f64)> {
-            complexfn::quadrature::gauss_legendre_rule::<f64>(n, 53)
-                .map(|r| r.iter().map(|(u, w)| (0.5 * (u + 1.0), 0.5 * w)).collect())
-                .unwrap_or_default()
-        };
-        (unit(16), unit(6))
-    })
-}
-
 /// A step's contact: (last contact cell, edge, cell pressures, force).
 type StepSet = (usize, f64, Vec<f64>, f64);
 
@@ -227,16 +210,18 @@ impl EdgeModel {
     /// edge cell's mean pressure to the mean pressure of cell c - 1, and the mean gap over the
     /// edge cell per unit mean pressure of cell c - 1 that the cells' constant pressures must
     /// leave there: the model's gap less the shape correction of the c + 1 cells 0..=c
-    /// (`docs/impact.md`, section 4; the correction only for a free edge, `with_shape`).
-    fn tie(&self, theta: f64, dx: f64, c: usize, with_shape: bool) -> (f64, f64) {
+    /// (`docs/impact.md`, section 4; the correction only for a free edge, given its rules).
+    fn tie(&self, theta: f64, dx: f64, c: usize, shape: Option<ShapeRules>) -> (f64, f64) {
         let inside = theta * dx;
         let outside = (1.0 - theta) * dx;
         let neighbour = self.mean_power(inside, inside + dx, dx);
         let load = self.mean_power(0.0, inside, dx);
         let e = self.lambda + 2.0;
         let mut gap = self.gap * outside.powf(e) / (e * dx);
-        if with_shape {
-            gap -= self.static_factor * dx.powf(self.lambda + 1.0) * self.shape_defect(theta, c);
+        if let Some(rules) = shape {
+            gap -= self.static_factor
+                * dx.powf(self.lambda + 1.0)
+                * self.shape_defect(theta, c, rules);
         }
         (load / neighbour, gap / neighbour)
     }
@@ -247,7 +232,7 @@ impl EdgeModel {
     /// -Int (p - pbar) ln|d - xi| dxi for p = d^lambda (d > 0) and pbar its mean on each
     /// cell: the part of the local solution's displacement there that the cells' constant
     /// pressures miss (the static kernel without its factor).
-    fn shape_defect(&self, theta: f64, cells: usize) -> f64 {
+    fn shape_defect(&self, theta: f64, cells: usize, rules: ShapeRules) -> f64 {
         let lam = self.lambda;
         // primitive of ln|u|
         let f = |u: f64| if u == 0.0 { 0.0 } else { u * u.abs().ln() - u };
@@ -261,7 +246,7 @@ impl EdgeModel {
                 0.0
             }
         };
-        let (clustered_rule, smooth_rule) = unit_rules();
+        let (clustered_rule, smooth_rule) = rules;
         // Int_a^b (p - pbar) kbar, clustered at both ends (x = end + (mid - end) u^2): the
         // pieces touching the edge cell's ends (kinks of kbar) or the edge (d^lambda)
         let clustered = |a: f64, b: f64, pbar: f64| -> f64 {
@@ -269,8 +254,10 @@ impl EdgeModel {
             let mut s = 0.0;
             for (end, dir) in [(a, mid - a), (b, mid - b)] {
                 for &(u, w) in clustered_rule {
+                    // u on [0, 1], weight w/2
+                    let u = 0.5 * (u + 1.0);
                     let x = end + dir * u * u;
-                    s += (power(x) - pbar) * kbar(x) * w * 2.0 * dir.abs() * u;
+                    s += (power(x) - pbar) * kbar(x) * w * dir.abs() * u;
                 }
             }
             s
@@ -279,8 +266,8 @@ impl EdgeModel {
             smooth_rule
                 .iter()
                 .map(|&(u, w)| {
-                    let x = a + (b - a) * u;
-                    (power(x) - pbar) * kbar(x) * w * (b - a)
+                    let x = a + 0.5 * (b - a) * (u + 1.0);
+                    (power(x) - pbar) * kbar(x) * 0.5 * w * (b - a)
                 })
                 .sum()
         };
@@ -297,21 +284,6 @@ impl EdgeModel {
         }
         total
     }
-}
-
-/// The static half-plane's displacement under a uniform load: the mean over [xa, xb] of
-/// -Int_sa^sb ln|x - xi| dxi in closed form (the second primitive of ln|u| at the corners),
-/// for the test of the shape defect.
-#[cfg(test)]
-fn static_cell_mean(xa: f64, xb: f64, sa: f64, sb: f64) -> f64 {
-    let g = |u: f64| {
-        if u == 0.0 {
-            0.0
-        } else {
-            0.5 * u * u * u.abs().ln() - 0.75 * u * u
-        }
-    };
-    -(g(xb - sa) - g(xa - sa) - g(xb - sb) + g(xa - sb)) / (xb - xa)
 }
 
 impl<'a> March<'a> {
@@ -511,7 +483,7 @@ impl<'a> March<'a> {
                     let (k, p, f) = match model {
                         Some(m) if c >= 2 && c <= imax => {
                             let theta = ((b / dxv + 0.5) - c as f64).clamp(0.0, 1.0);
-                            let (ratio, _) = m.tie(theta, dxv, c, false);
+                            let (ratio, _) = m.tie(theta, dxv, c, None);
                             let (p, f) = self.solve_tied(&data, c, ratio)?;
                             (c, p, f)
                         }
@@ -730,7 +702,7 @@ impl<'a> March<'a> {
         let dx = self.dx;
         let top = (d.fbar.len() - 1).min(self.kcap);
         let residual = |c: usize, theta: f64| -> Result<(f64, Vec<f64>, f64)> {
-            let (ratio, gap) = model.tie(theta, dx, c, true);
+            let (ratio, gap) = model.tie(theta, dx, c, Some(self.tables.shape_rules()));
             let (p, f) = self.solve_tied(d, c, ratio)?;
             let rho = self.displacement(c, &d.hist, &p) - d.target(c, f)? - gap * p[c - 1];
             Ok((rho, p, f))
@@ -810,6 +782,25 @@ impl<'a> March<'a> {
 mod tests {
     use super::*;
 
+    /// The static half-plane's displacement under a uniform load: the mean over [xa, xb] of
+    /// -Int_sa^sb ln|x - xi| dxi in closed form (the second primitive of ln|u| at the corners),
+    /// for the test of the shape defect.
+    fn static_cell_mean(xa: f64, xb: f64, sa: f64, sb: f64) -> f64 {
+        let g = |u: f64| {
+            if u == 0.0 {
+                0.0
+            } else {
+                0.5 * u * u * u.abs().ln() - 0.75 * u * u
+            }
+        };
+        -(g(xb - sa) - g(xa - sa) - g(xb - sb) + g(xa - sb)) / (xb - xa)
+    }
+
+    /// Tables whose rules the march passes to the shape correction.
+    fn tables() -> Tables {
+        Tables::new(lamb::HalfPlane::from_poisson(0.25).unwrap(), 2.0).unwrap()
+    }
+
     /// The shape defect for lambda = 0 (a uniform pressure behind the edge), where only the
     /// edge cell's constant misses anything, against the closed-form static cell means.
     #[test]
@@ -821,12 +812,14 @@ mod tests {
             sub_cell: true,
             static_factor: 1.0,
         };
+        let tables = tables();
+        let rules = tables.shape_rules();
         for theta in [0.05, 0.37, 0.5, 0.8, 0.999] {
             let (a, b) = (theta - 1.0, theta);
             let want = -theta * static_cell_mean(a, b, a, 0.0)
                 + (1.0 - theta) * static_cell_mean(a, b, 0.0, b);
             for cells in [0, 3, 20] {
-                let got = model.shape_defect(theta, cells);
+                let got = model.shape_defect(theta, cells, rules);
                 assert!(
                     (got - want).abs() <= 1e-9 * want.abs().max(1e-3),
                     "theta = {theta}, cells = {cells}: {got} against {want}"
@@ -847,6 +840,8 @@ mod tests {
             sub_cell: true,
             static_factor: 1.0,
         };
+        let tables = tables();
+        let rules = tables.shape_rules();
         let theta = 0.3;
         // brute force over the edge cell and two cells behind it
         let n = 20000;
@@ -871,15 +866,15 @@ mod tests {
                 want += (p - pbar) * kbar(xi) / n as f64;
             }
         }
-        let got = model.shape_defect(theta, 2);
+        let got = model.shape_defect(theta, 2, rules);
         assert!(
             (got - want).abs() < 2e-5 * want.abs(),
             "{got} against {want}"
         );
         let (d20, d40, d80) = (
-            model.shape_defect(theta, 20),
-            model.shape_defect(theta, 40),
-            model.shape_defect(theta, 80),
+            model.shape_defect(theta, 20, rules),
+            model.shape_defect(theta, 40, rules),
+            model.shape_defect(theta, 80, rules),
         );
         // tail ~ cells^(-1/2): differences shrink by about sqrt 2
         let ratio = (d40 - d20) / (d80 - d40);

@@ -42,6 +42,9 @@ const SMOOTH_COARSE: usize = 5;
 /// Largest relative difference of the two plain rules accepted on an analytic piece.
 const SMOOTH_TOL: f64 = 1e-13;
 
+/// Gauss-Legendre rules on [-1, 1] for pieces clustered at their ends and for smooth pieces.
+pub(crate) type ShapeRules<'r> = (&'r [(f64, f64)], &'r [(f64, f64)]);
+
 /// The normalised coefficients a(k, l) (dx = 1), grown on demand in k and l.
 pub struct Tables {
     kappa: f64,
@@ -83,6 +86,12 @@ impl Tables {
     /// The half-plane.
     pub fn half_plane(&self) -> &HalfPlane<f64> {
         &self.half_plane
+    }
+
+    /// The clustered and the smooth pieces' finer Gauss-Legendre rules on [-1, 1], shared with
+    /// the march's shape correction of the free edge.
+    pub(crate) fn shape_rules(&self) -> ShapeRules<'_> {
+        (&self.fine, &self.smooth_fine)
     }
 
     /// The largest absolute error estimate of a normalised coefficient computed so far.
