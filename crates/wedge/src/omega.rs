@@ -23,8 +23,10 @@
 //! ```
 //!
 //! The u-integrand is analytic on [0, p^2] (the nearest singularity of omega is the branch
-//! point u = m^2 of |p2|), so one Gauss-Legendre rule in u, with omega tabulated on its nodes
-//! once per case ([`InnerRule`]), serves every evaluation of b, S0 and Lambda0.
+//! point u = m^2 of |p2|), so one Gauss-Legendre rule, with omega tabulated on its nodes once
+//! per case ([`InnerRule`]), serves every evaluation of b, S0 and Lambda0. The rule is
+//! Gauss-Legendre in t = ln sqrt(m^2 - u), which sends that branch point to t = -inf and needs
+//! a third to a half fewer nodes than a rule in u (`docs/inner-rule.md`).
 //! Near the segment, Lambda0 subtracts omega at zeta^2 (continued analytically) and adds
 //! omega(zeta^2) ln((p^2 - zeta^2)/(-zeta^2)) in closed form, so its boundary values are
 //!
@@ -368,27 +370,51 @@ pub(crate) struct TanForm<T> {
     a: T,
 }
 
-/// First guess of the Gauss-Legendre degree for the u-integrals over [0, p^2] at `prec` bits.
+/// The interval of the inner rule's variable t = ln sqrt(m^2 - u), [ln sqrt(m^2 - p^2), ln m],
+/// as (centre, half-width) in f64: the half-width is -(1/4) ln(1 - p^2/m^2).
+fn log_interval(m: f64, p: f64) -> (f64, f64) {
+    let half = -0.25 * (-(p / m).powi(2)).ln_1p();
+    (m.ln() - half, half)
+}
+
+/// The Bernstein-ellipse parameter of a point z of the complex t-plane with respect to the
+/// t-interval (centre, half-width): the rule's error for a pole or branch point at z falls
+/// like rho^(-2n). Infinite (or NaN) for points at infinity.
+fn ellipse_parameter(z: num_complex::Complex<f64>, centre: f64, half: f64) -> f64 {
+    let zeta = (z - centre) / half;
+    let w = zeta + (zeta - 1.0).sqrt() * (zeta + 1.0).sqrt();
+    let r = w.norm();
+    r.max(1.0 / r)
+}
+
+/// First guess of the Gauss-Legendre degree of the inner rule at `prec` bits.
 ///
-/// The nearest singularity of omega(u) on the real axis is the branch point u = m^2, which
-/// lies on the Bernstein ellipse of parameter rho = a + sqrt(a^2 - 1), a = 2 m^2/p^2 - 1, of
-/// [0, p^2]; the rule's error then falls like rho^(-2n), so n = prec ln 2/(2 ln rho) nodes
-/// reach the working precision. A margin of 10 percent plus 4 nodes covers the prefactor
-/// (the estimate is sharp: at 365 bits and p = 0.3, n itself already agrees with 2n to the
-/// working precision); the doubling test of [`InnerRule::new`] confirms it (and doubles if a
-/// complex singularity of the arctangent lies closer).
+/// The rule is Gauss-Legendre in t = ln x, x = sqrt(m^2 - u) (`docs/inner-rule.md`): the
+/// branch point u = m^2 of omega goes to t = -inf, and the nearest singularities left are
+/// those of Lambda0(s) for s in (m^2, 1), whose poles u = s lie at t = ln sqrt(s - m^2) +- i pi/2,
+/// at worst straight above the centre of the interval: rho = b + sqrt(b^2 + 1),
+/// b = (pi/2)/half-width (the branch point u = 1 of |p1|, at the same height and further out,
+/// is no nearer). The rule's error then falls like rho^(-2n), so n = prec ln 2/(2 ln rho) nodes
+/// reach the working precision. A margin of 10 percent plus 4 nodes covers the prefactor;
+/// the doubling test of [`InnerRule::new`] confirms it (and doubles if a complex singularity
+/// of the arctangent lies closer).
 pub fn predicted_nodes(m: f64, p: f64, prec: u32) -> usize {
-    let a = 2.0 * (m / p).powi(2) - 1.0;
-    let rho = a + (a * a - 1.0).max(0.0).sqrt();
+    let (_, half) = log_interval(m, p);
+    let b = std::f64::consts::FRAC_PI_2 / half.max(1e-300);
+    let rho = b + b.hypot(1.0);
     let n = f64::from(prec) * std::f64::consts::LN_2 / (2.0 * rho.ln().max(1e-3));
     ((1.1 * n).ceil() as usize + 4).clamp(16, 4096)
 }
 
-/// Omega - Omega0 tabulated on a Gauss-Legendre rule in u over [0, p^2]: the one table behind
-/// b, S0 and Lambda0.
+/// Omega - Omega0 tabulated on a Gauss-Legendre rule over [0, p^2]: the one table behind
+/// b, S0 and Lambda0. The rule is Gauss-Legendre in t = ln sqrt(m^2 - u) (see
+/// [`predicted_nodes`] and `docs/inner-rule.md`), carried back to nodes u_j and weights w_j in u.
 #[derive(Clone, Debug)]
 pub struct InnerRule<T> {
     p2: T,
+    /// Centre and half-width of the t-interval (f64: they decide the form of a Lambda0 sum).
+    log_centre: f64,
+    log_half: f64,
     /// (u_j, w_j, omega(u_j)) with omega = Omega - Omega0.
     nodes: Vec<(T, T, T)>,
     /// w_j omega(u_j), the numerators of the unsubtracted sums.
@@ -417,6 +443,8 @@ impl<T: CachedRules> InnerRule<T> {
             // built and every sum over the (empty) nodes is an exact zero.
             return Ok(InnerRule {
                 p2,
+                log_centre: 0.0,
+                log_half: 1.0,
                 nodes: Vec::new(),
                 w_om: Vec::new(),
                 w_f64: Vec::new(),
@@ -429,10 +457,25 @@ impl<T: CachedRules> InnerRule<T> {
             if let Some(pr) = &prev {
                 let mut d = 0.0_f64;
                 let mut scale = 1e-300_f64;
-                let probes = [p.zero(), p.clone() * 0.5, p.clone() * 0.97];
-                for xi in &probes {
-                    let a = rule.b(omega, xi);
-                    let b = pr.b(omega, xi);
+                // b on the contact and between p and m, and Lambda0 at the worst real point
+                // of (m^2, 1): u = s at t = centre +- i pi/2 (see `predicted_nodes`)
+                let m = omega.rayleigh().m();
+                let probes = [
+                    p.zero(),
+                    p.clone() * 0.5,
+                    p.clone() * 0.97,
+                    (p.clone() + m) / 2.0,
+                ];
+                let x_c = p.lit(2.0 * rule.log_centre).exp();
+                let s_c = omega.rayleigh().m2().clone() + x_c;
+                let values = probes
+                    .iter()
+                    .map(|xi| (rule.b(omega, xi), pr.b(omega, xi)))
+                    .chain(std::iter::once((
+                        rule.lambda0_real_outside(&s_c),
+                        pr.lambda0_real_outside(&s_c),
+                    )));
+                for (a, b) in values {
                     d = d.max((a.clone() - &b).abs().to_f64());
                     scale = scale.max(a.abs().to_f64()).max(1.0);
                 }
@@ -457,26 +500,37 @@ impl<T: CachedRules> InnerRule<T> {
         })
     }
 
+    /// The rule of n nodes in t = ln x, x = sqrt(m^2 - u), t in [t_p, t_m] = [ln sqrt(m^2 - p^2), ln m]:
+    /// with h = (t_m - t_p)/2 = -(1/4) ln(1 - p^2/m^2) and tau_j the Gauss-Legendre nodes on
+    /// [-1, 1], x_j^2 = m^2 exp(-2 h (1 - tau_j)), u_j = -m^2 expm1(-2 h (1 - tau_j)) (full
+    /// relative accuracy as u_j -> 0) and w_j = 2 h x_j^2 w_tau_j (du = -2 x^2 dt).
     fn with_nodes(omega: &OmegaFn<T>, p2: &T, n: usize) -> Result<Self> {
         let rule = gauss_legendre_rule::<T>(n, p2.prec())?;
-        let half = p2.clone() / 2.0;
+        let m2 = omega.rayleigh().m2().clone();
+        let half = -(-(p2.clone() / &m2)).ln_1p() / 4.0;
+        let (log_centre, log_half) =
+            log_interval(omega.rayleigh().m().to_f64(), p2.to_f64().sqrt());
         let form0 = omega.tan_form(&p2.zero());
         let mut forms = Vec::with_capacity(n);
         let nodes: Vec<(T, T, T)> = rule
             .iter()
-            .map(|(x, w)| {
-                let u = half.clone() * (x.clone() + 1.0);
+            .map(|(tau, w)| {
+                let e = ((p2.one() - tau) * &half * -2.0).exp_m1();
+                let u = -(m2.clone() * &e);
+                let x2 = m2.clone() - &u;
                 // omega(u) = u (Omega(u) - Omega(0))/(u - 0), free of cancellation
                 let f = omega.tan_form(&u);
                 let om = omega.divided_difference(&f, &form0) * &u;
                 forms.push(f);
-                (u, w.clone() * &half, om)
+                (u, w.clone() * &half * x2 * 2.0, om)
             })
             .collect();
         let w_om = nodes.iter().map(|(_, w, om)| om.clone() * w).collect();
         let w_f64 = nodes.iter().map(|(_, w, _)| w.to_f64()).collect();
         Ok(InnerRule {
             p2: p2.clone(),
+            log_centre,
+            log_half,
             nodes,
             w_om,
             w_f64,
@@ -573,21 +627,22 @@ impl<T: Real> InnerRule<T> {
             return Cx::real(zeta.re.zero());
         }
         let s = zeta.clone() * zeta;
-        // Semi-major axis (in units of p^2/2) of the ellipse with foci 0, p^2 through s.
-        let d0 = s.abs();
-        let d1 = s.clone().add_re(&(-self.p2.clone())).abs();
-        let a = (d0 + d1) / &self.p2;
-        let m2 = omega.rayleigh().m2().clone();
-        // The plain sum of omega(u)/(u - s) converges like rho_s^(-2n), rho_s = a + sqrt(a^2 - 1)
-        // the ellipse parameter of s: it is used only where that reaches the working
-        // precision (with a factor 4 of margin in the exponent); closer to the segment the
-        // subtracted form, whose integrand is analytic, is summed. That form needs omega(s),
-        // analytic inside the ellipse through the branch point u = m^2.
+        // The plain sum of omega(u)/(u - s) converges like rho_s^(-2n), rho_s the ellipse
+        // parameter of the pole t_s = ln sqrt(m^2 - s) (principal; its images t_s +- i pi are
+        // further away) in the rule's variable t: it is used only where that reaches the working
+        // precision (with a factor 4 of margin in the exponent). Closer to the segment the
+        // subtracted form is summed: omega(s) (principal square roots, which continue omega(u)
+        // in x = sqrt(m^2 - u)) removes the pole at t_s, and the poles left, t_s +- i pi, are
+        // never nearer than the singularities the rule is built for.
         let n = self.nodes.len().max(1) as f64;
         let rho = 2f64.powf(1.25 * f64::from(s.re.prec()) / (2.0 * n));
-        let a_plain = s.re.lit(0.5 * (rho + 1.0 / rho));
-        let limit = (m2 * 2.0 / &self.p2 - 1.01).min(a_plain);
-        if a < limit {
+        let m2 = omega.rayleigh().m2().to_f64();
+        let t_s = (num_complex::Complex::new(m2, 0.0) - s.to_c64())
+            .sqrt()
+            .ln();
+        let rho_s = ellipse_parameter(t_s, self.log_centre, self.log_half);
+        // NaN (s = m^2, t_s = -inf) is far from the segment: the plain sum
+        if rho_s < rho {
             let om_s = omega.omega_rel(&s);
             let mut acc = Cx::real(s.re.zero());
             let mut s_form: Option<TanForm<Cx<T>>> = None;
@@ -718,6 +773,62 @@ mod tests {
                     let err = (got.re - exact.re.to_f64()).hypot(got.im - exact.im.to_f64());
                     assert!(err < 2e-15, "s = {u} + {dx} + i {dy}: error {err:e}");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn inner_sums_match_an_independent_quadrature() {
+        // S0, b (on the contact and between p and m) and Lambda0 (real s in (m^2, 1) above the
+        // rule's worst point, complex s near the segment) from the rule in t = ln sqrt(m^2 - u),
+        // against tanh-sinh in u at 256 bits: the benchmark case, close to the Rayleigh speed,
+        // strong friction
+        use complexfn::quadrature::{tanh_sinh, Point, TsOptions};
+        let like = Float::with_val(256, 0);
+        for (beta, gamma, p) in [(-0.0175, 0.6, 0.3), (-0.0175, 0.6, 0.49), (-1.0, 3.0, 0.25)] {
+            let om = omega_fn(&like, beta, gamma);
+            let pb = like.lit(p);
+            let rule = InnerRule::new(&om, &pb).unwrap();
+            let p2 = pb.clone().sqr();
+            let m = om.rayleigh().m().clone();
+            let w = |u: &Float| om.omega_rel(&Cx::real(u.clone())).re;
+            let quad = |f: &dyn Fn(&Float) -> Cx<Float>| {
+                tanh_sinh(
+                    &like.zero(),
+                    &p2,
+                    TsOptions::new(1e-72),
+                    |pt: &Point<Float>| f(&pt.v),
+                )
+                .unwrap()
+                .value
+            };
+            let close = |got: Cx<Float>, exact: Cx<Float>, what: &str| {
+                let err = (got - exact.clone()).abs().to_f64();
+                assert!(err < 1e-66, "p {p}, gamma {gamma}, {what}: error {err:e}");
+            };
+            let s0 = quad(&|u: &Float| Cx::real(w(u) / u));
+            close(Cx::real(rule.s0()), s0, "S0");
+            let probes: [Float; 2] = [pb.clone() * 0.5, (pb.clone() + &m) / 2.0];
+            for xi in probes {
+                let s = xi.clone().sqr();
+                let ws = om.omega(&xi) - om.omega0();
+                let b = quad(&|u: &Float| Cx::real((w(u) - &ws) / (u.clone() - &s)));
+                close(Cx::real(rule.b(&om, &xi)), b, "b");
+            }
+            let s_c = m.clone().sqr() + like.lit(2.0 * rule.log_centre).exp();
+            let lam = quad(&|u: &Float| Cx::real(w(u) / (u.clone() - &s_c)));
+            close(
+                Cx::real(rule.lambda0_real_outside(&s_c)),
+                lam,
+                "Lambda0 real",
+            );
+            for s in [
+                Cx::new(p2.clone() * 0.4, like.lit(0.01)),
+                Cx::new(-(p2.clone()) * 0.3, like.lit(0.02)),
+                Cx::new(m.clone().sqr() * 1.5, like.lit(0.05)),
+            ] {
+                let lam = quad(&|u: &Float| Cx::real(w(u)) / &(Cx::real(u.clone()) - s.clone()));
+                close(rule.lambda0(&om, &s.clone().sqrt()), lam, "Lambda0 complex");
             }
         }
     }
