@@ -419,6 +419,9 @@ pub struct InnerRule<T> {
     nodes: Vec<(T, T, T)>,
     /// w_j omega(u_j), the numerators of the unsubtracted sums.
     w_om: Vec<T>,
+    /// w_j Omega(u_j) = w_j (omega(u_j) + Omega0), the numerators of
+    /// [`InnerRule::omega_cauchy_outside`].
+    w_big_om: Vec<T>,
     /// w_j in f64: the node spacing that decides where a divided difference is needed.
     w_f64: Vec<f64>,
     /// tan(pi Omega) in parts at each node, for the divided differences of nodes close to the
@@ -447,6 +450,7 @@ impl<T: CachedRules> InnerRule<T> {
                 log_half: 1.0,
                 nodes: Vec::new(),
                 w_om: Vec::new(),
+                w_big_om: Vec::new(),
                 w_f64: Vec::new(),
                 forms: Vec::new(),
                 error: 0.0,
@@ -471,10 +475,16 @@ impl<T: CachedRules> InnerRule<T> {
                 let values = probes
                     .iter()
                     .map(|xi| (rule.b(omega, xi), pr.b(omega, xi)))
-                    .chain(std::iter::once((
-                        rule.lambda0_real_outside(&s_c),
-                        pr.lambda0_real_outside(&s_c),
-                    )));
+                    .chain([
+                        (
+                            rule.lambda0_real_outside(&s_c),
+                            pr.lambda0_real_outside(&s_c),
+                        ),
+                        (
+                            rule.omega_cauchy_outside(&s_c),
+                            pr.omega_cauchy_outside(&s_c),
+                        ),
+                    ]);
                 for (a, b) in values {
                     d = d.max((a.clone() - &b).abs().to_f64());
                     scale = scale.max(a.abs().to_f64()).max(1.0);
@@ -525,7 +535,16 @@ impl<T: CachedRules> InnerRule<T> {
                 (u, w.clone() * &half * x2 * 2.0, om)
             })
             .collect();
-        let w_om = nodes.iter().map(|(_, w, om)| om.clone() * w).collect();
+        let w_om: Vec<T> = nodes.iter().map(|(_, w, om)| om.clone() * w).collect();
+        let w_big_om = nodes
+            .iter()
+            .zip(&w_om)
+            .map(|((_, w, _), w_om)| {
+                let mut t = w_om.clone();
+                t.mul_add_assign(w, omega.omega0());
+                t
+            })
+            .collect();
         let w_f64 = nodes.iter().map(|(_, w, _)| w.to_f64()).collect();
         Ok(InnerRule {
             p2: p2.clone(),
@@ -533,6 +552,7 @@ impl<T: CachedRules> InnerRule<T> {
             log_half,
             nodes,
             w_om,
+            w_big_om,
             w_f64,
             forms,
             error: f64::INFINITY,
@@ -580,7 +600,12 @@ impl<T: Real> InnerRule<T> {
         let mut s_form: Option<TanForm<T>> = None;
         let mut d = s.zero();
         let mut t = s.zero();
-        for (j, ((u, w, om), &w_f)) in self.nodes.iter().zip(&self.w_f64).enumerate() {
+        for (j, ((u, w, _), (w_om, &w_f))) in self
+            .nodes
+            .iter()
+            .zip(self.w_om.iter().zip(&self.w_f64))
+            .enumerate()
+        {
             d.clone_from(u);
             d -= s;
             if d.to_f64().abs() < w_f {
@@ -588,9 +613,9 @@ impl<T: Real> InnerRule<T> {
                 acc += omega.divided_difference(&self.forms[j], sf) * w;
                 continue;
             }
-            t.clone_from(om);
-            t -= om_s;
-            t *= w;
+            // w_j omega_j - omega(s) w_j, one fused rounding
+            t.clone_from(w_om);
+            t.mul_sub_assign(om_s, w);
             t /= &d;
             acc += &t;
         }
@@ -606,7 +631,29 @@ impl<T: Real> InnerRule<T> {
         acc
     }
 
-    /// Lambda0 at a real s = v^2 > p^2 (no subtraction; used for v >= m), summed in place.
+    /// Int_0^{p^2} Omega(u)/(u - s) du = Omega0 ln(1 - p^2/s) + Lambda0(s) at a real s >= m^2
+    /// (v >= m): the exponent of H(v)/v sqrt(v^2 - p^2) there, summed in place without a
+    /// logarithm.
+    ///
+    /// The rule resolves the pole u = s for s >= m^2 whatever the numerator's constant part
+    /// (its nodes are placed for the pole, see [`predicted_nodes`]; the doubling test of
+    /// [`InnerRule::new`] checks this sum), so the closed-form Omega0 ln(1 - p^2/s) is not
+    /// needed: the terms w_j Omega(u_j)/(u_j - s) have one sign and no cancellation.
+    pub fn omega_cauchy_outside(&self, s: &T) -> T {
+        let mut acc = s.zero();
+        let mut d = s.zero();
+        let mut t = s.zero();
+        for ((u, _, _), w_big_om) in self.nodes.iter().zip(&self.w_big_om) {
+            d.clone_from(u);
+            d -= s;
+            t.clone_from(w_big_om);
+            t /= &d;
+            acc += &t;
+        }
+        acc
+    }
+
+    /// Lambda0 at a real s = v^2 > p^2 (no subtraction), summed in place.
     pub fn lambda0_real_outside(&self, s: &T) -> T {
         let mut acc = s.zero();
         let mut d = s.zero();
@@ -822,6 +869,17 @@ mod tests {
                 lam,
                 "Lambda0 real",
             );
+            // Int Omega/(u - s) for s in [m^2, 1), without the closed-form logarithm
+            let om0 = om.omega0().clone();
+            let m2 = m.clone().sqr();
+            for s in [s_c.clone(), m2.clone() * 1.001, like.lit(0.999), m2 * 1.5] {
+                let exact = quad(&|u: &Float| Cx::real((w(u) + &om0) / (u.clone() - &s)));
+                close(
+                    Cx::real(rule.omega_cauchy_outside(&s)),
+                    exact,
+                    "Int Omega/(u - s)",
+                );
+            }
             for s in [
                 Cx::new(p2.clone() * 0.4, like.lit(0.01)),
                 Cx::new(-(p2.clone()) * 0.3, like.lit(0.02)),
