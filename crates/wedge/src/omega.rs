@@ -408,12 +408,25 @@ pub fn predicted_nodes(m: f64, p: f64, prec: u32) -> usize {
     ((1.05 * n).ceil() as usize + 2).clamp(16, 4096)
 }
 
+/// First guess of the degree of the fallback rule in u itself ([`InnerRule::new`]): the
+/// branch point u = m^2 lies on the Bernstein ellipse of [0, p^2] of parameter
+/// rho = a + sqrt(a^2 - 1), a = 2 m^2/p^2 - 1, with a margin of 10 percent plus 4 nodes.
+fn predicted_nodes_u(m: f64, p: f64, prec: u32) -> usize {
+    let a = 2.0 * (m / p).powi(2) - 1.0;
+    let rho = a + (a * a - 1.0).max(0.0).sqrt();
+    let n = f64::from(prec) * std::f64::consts::LN_2 / (2.0 * rho.ln().max(1e-3));
+    ((1.1 * n).ceil() as usize + 4).clamp(16, 4096)
+}
+
 /// Omega - Omega0 tabulated on a Gauss-Legendre rule over [0, p^2]: the one table behind
 /// b, S0 and Lambda0. The rule is Gauss-Legendre in t = ln sqrt(m^2 - u) (see
 /// [`predicted_nodes`] and `docs/inner-rule.md`), carried back to nodes u_j and weights w_j in u.
 #[derive(Clone, Debug)]
 pub struct InnerRule<T> {
     p2: T,
+    /// Whether the rule is Gauss-Legendre in t (otherwise in u: the fallback of
+    /// [`InnerRule::new`]).
+    log_var: bool,
     /// Centre and half-width of the t-interval (f64: they decide the form of a Lambda0 sum).
     log_centre: f64,
     log_half: f64,
@@ -436,18 +449,20 @@ pub struct InnerRule<T> {
 impl<T: CachedRules> InnerRule<T> {
     /// Build the rule for contact speed p, doubling the number of nodes until S0 and b at
     /// two interior points agree between n and 2n to the working precision.
+    ///
+    /// Should the rule in t not converge within six doublings (an arctangent branch point close
+    /// to u = 0, where t compresses [0, p^2] the most: nu = 0.4999 with gamma = 1e6), the same
+    /// doubling runs on a rule in u itself.
     pub fn new(omega: &OmegaFn<T>, p: &T) -> Result<Self> {
         let prec = p.prec();
         let p2 = p.clone().sqr();
-        let mut n = predicted_nodes(omega.rayleigh().m().to_f64(), p.to_f64(), prec);
-        let mut prev: Option<Self> = None;
-        let mut last_d: Option<f64> = None;
         let eps = p.epsilon().to_f64().max(1e-300);
         if omega.is_zero() {
             // Omega = 0 (beta + gamma = 0): b, S0 and Lambda0 vanish identically. No rule is
             // built and every sum over the (empty) nodes is an exact zero.
             return Ok(InnerRule {
                 p2,
+                log_var: true,
                 log_centre: 0.0,
                 log_half: 1.0,
                 nodes: Vec::new(),
@@ -458,8 +473,40 @@ impl<T: CachedRules> InnerRule<T> {
                 error: 0.0,
             });
         }
+        let (m, pf) = (omega.rayleigh().m().to_f64(), p.to_f64());
+        let mut reached = f64::INFINITY;
+        for log_var in [true, false] {
+            let n = if log_var {
+                predicted_nodes(m, pf, prec)
+            } else {
+                predicted_nodes_u(m, pf, prec)
+            };
+            match Self::doubled(omega, p, n, log_var)? {
+                Ok(rule) => return Ok(rule),
+                Err(d) => reached = d,
+            }
+        }
+        Err(WedgeError::NoConvergence {
+            what: "Gauss-Legendre rule for Lambda0".into(),
+            reached,
+            asked: eps,
+        })
+    }
+
+    /// The doubling test from n nodes in t (`log_var`) or in u: the accepted rule, or the
+    /// last difference found.
+    fn doubled(
+        omega: &OmegaFn<T>,
+        p: &T,
+        mut n: usize,
+        log_var: bool,
+    ) -> Result<std::result::Result<Self, f64>> {
+        let p2 = p.clone().sqr();
+        let eps = p.epsilon().to_f64().max(1e-300);
+        let mut prev: Option<Self> = None;
+        let mut last_d: Option<f64> = None;
         for _ in 0..6 {
-            let rule = Self::with_nodes(omega, &p2, n)?;
+            let rule = Self::with_nodes(omega, &p2, n, log_var)?;
             if let Some(pr) = &prev {
                 let mut d = 0.0_f64;
                 let mut scale = 1e-300_f64;
@@ -499,27 +546,27 @@ impl<T: CachedRules> InnerRule<T> {
                     // rule, with the difference as its error estimate.
                     let mut r = prev.take().expect("previous rule");
                     r.error = d;
-                    return Ok(r);
+                    return Ok(Ok(r));
                 }
             }
             prev = Some(rule);
             n *= 2;
         }
-        Err(WedgeError::NoConvergence {
-            what: "Gauss-Legendre rule for Lambda0".into(),
-            reached: prev.map(|r| r.error).unwrap_or(f64::INFINITY),
-            asked: eps,
-        })
+        Ok(Err(last_d.unwrap_or(f64::INFINITY)))
     }
 
     /// The rule of n nodes in t = ln x, x = sqrt(m^2 - u), t in [t_p, t_m] = [ln sqrt(m^2 - p^2), ln m]:
     /// with h = (t_m - t_p)/2 = -(1/4) ln(1 - p^2/m^2) and tau_j the Gauss-Legendre nodes on
     /// [-1, 1], x_j^2 = m^2 exp(-2 h (1 - tau_j)), u_j = -m^2 expm1(-2 h (1 - tau_j)) (full
     /// relative accuracy as u_j -> 0) and w_j = 2 h x_j^2 w_tau_j (du = -2 x^2 dt).
-    fn with_nodes(omega: &OmegaFn<T>, p2: &T, n: usize) -> Result<Self> {
+    ///
+    /// Without `log_var` the rule is Gauss-Legendre in u itself: u_j = (p^2/2)(1 + tau_j),
+    /// w_j = (p^2/2) w_tau_j.
+    fn with_nodes(omega: &OmegaFn<T>, p2: &T, n: usize, log_var: bool) -> Result<Self> {
         let rule = gauss_legendre_rule::<T>(n, p2.prec())?;
         let m2 = omega.rayleigh().m2().clone();
         let half = -(-(p2.clone() / &m2)).ln_1p() / 4.0;
+        let half_u = p2.clone() / 2.0;
         let (log_centre, log_half) =
             log_interval(omega.rayleigh().m().to_f64(), p2.to_f64().sqrt());
         let form0 = omega.tan_form(&p2.zero());
@@ -527,14 +574,19 @@ impl<T: CachedRules> InnerRule<T> {
         let nodes: Vec<(T, T, T)> = rule
             .iter()
             .map(|(tau, w)| {
-                let e = ((p2.one() - tau) * &half * -2.0).exp_m1();
-                let u = -(m2.clone() * &e);
-                let x2 = m2.clone() - &u;
+                let (u, wu) = if log_var {
+                    let e = ((p2.one() - tau) * &half * -2.0).exp_m1();
+                    let u = -(m2.clone() * &e);
+                    let x2 = m2.clone() - &u;
+                    (u, w.clone() * &half * x2 * 2.0)
+                } else {
+                    (half_u.clone() * (tau.clone() + 1.0), w.clone() * &half_u)
+                };
                 // omega(u) = u (Omega(u) - Omega(0))/(u - 0), free of cancellation
                 let f = omega.tan_form(&u);
                 let om = omega.divided_difference(&f, &form0) * &u;
                 forms.push(f);
-                (u, w.clone() * &half * x2 * 2.0, om)
+                (u, wu, om)
             })
             .collect();
         let w_om: Vec<T> = nodes.iter().map(|(_, w, om)| om.clone() * w).collect();
@@ -550,6 +602,7 @@ impl<T: CachedRules> InnerRule<T> {
         let w_f64 = nodes.iter().map(|(_, w, _)| w.to_f64()).collect();
         Ok(InnerRule {
             p2: p2.clone(),
+            log_var,
             log_centre,
             log_half,
             nodes,
@@ -691,7 +744,17 @@ impl<T: Real> InnerRule<T> {
             .ln();
         let rho_s = ellipse_parameter(t_s, self.log_centre, self.log_half);
         // NaN (s = m^2, t_s = -inf) is far from the segment: the plain sum
-        if rho_s < rho {
+        let subtract = if self.log_var {
+            rho_s < rho
+        } else {
+            // the rule in u: the ellipse of s about [0, p^2] (semi-major axis a in units of
+            // p^2/2), the subtracted form inside the ellipse through the branch point u = m^2
+            let a = (s.abs() + s.clone().add_re(&(-self.p2.clone())).abs()) / &self.p2;
+            let a_plain = s.re.lit(0.5 * (rho + 1.0 / rho));
+            let limit = (omega.rayleigh().m2().clone() * 2.0 / &self.p2 - 1.01).min(a_plain);
+            a < limit
+        };
+        if subtract {
             let om_s = omega.omega_rel(&s);
             let mut acc = Cx::real(s.re.zero());
             let mut s_form: Option<TanForm<Cx<T>>> = None;
