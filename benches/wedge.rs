@@ -2,7 +2,7 @@
 //! profile, one full solve (Q, V) with friction and coupling, an alpha-V curve and the inverse
 //! alpha(V), each in f64 and at 30 and 100 digits (MPFR), the full solve and the curve also
 //! in double-double (what `--digits 30` runs on the paper's construction); and one genuine
-//! solve (two basis sizes) in f64.
+//! solve (three basis sizes) in f64 and at 30 digits (MPFR).
 //!
 //! Run: `cargo bench --bench wedge`. The 200-point curve is benchmarked in f64 and at 30
 //! digits; at 100 digits a 10-point curve stands for it (per point it costs one full solve).
@@ -236,6 +236,19 @@ fn bench_genuine(c: &mut Criterion) {
             )
             .unwrap()
             .v_hat()
+        })
+    });
+    // what `wedge solve --solution genuine --digits 30` runs: MPFR at the bits of 30 digits
+    // plus the guard bits, with that precision's options
+    let l = like(Some(30)).unwrap();
+    let p = l.lit(0.3);
+    let opts = genuine::SolveOptions::for_precision(l.prec());
+    g.bench_function(label(Some(30)), |b| {
+        b.iter(|| {
+            genuine::GenuineCase::solve(&mat, &ind, black_box(p.clone()), opts.clone())
+                .unwrap()
+                .v_hat()
+                .to_f64()
         })
     });
     g.finish();

@@ -222,22 +222,22 @@ impl<T: Real> Case<T> {
     /// For v >= m the integral form of Lambda0 is used. `v_minus_p` is v - p to full
     /// relative accuracy.
     ///
-    /// With q = v^2 - p^2, both are evaluated as H/v = exp(E ln(q/v^2) + c)/sqrt(q)
-    /// (E = Omega(v) and c = b(v) for v < m; E = Omega0 and c = Lambda0(v) for v >= m):
-    /// one logarithm, of q/v^2 = 1 - p^2/v^2 in (0, 1), which keeps its relative accuracy
-    /// however close v is to p.
+    /// With q = v^2 - p^2, both are evaluated as H/v = exp(c)/sqrt(q). For v < m,
+    /// c = Omega(v) ln(q/v^2) + b(v): one logarithm, of q/v^2 = 1 - p^2/v^2 in (0, 1), which
+    /// keeps its relative accuracy however close v is to p. For v >= m,
+    /// c = Omega0 ln(q/v^2) + Lambda0(v) = Int_0^{p^2} Omega(u)/(u - v^2) du, one sum over the
+    /// inner rule without a logarithm ([`InnerRule::omega_cauchy_outside`]).
     pub fn h_over_v_outside(&self, v: &T, v_minus_p: &T) -> T {
         let s = v.clone().sqr();
         let vp = v_minus_p.clone() * (v.clone() + &self.p);
-        let log = (vp.clone() / &s).ln();
         let arg = if v < self.m() {
+            let log = (vp.clone() / &s).ln();
             let om = self.omega.omega(v);
             let om_rel = om.clone() - self.omega.omega0();
             let b = self.inner.b_with(&self.omega, &s, &om_rel);
             log * om + b
         } else {
-            let lam = self.inner.lambda0_real_outside(&s);
-            log * self.omega.omega0() + lam
+            self.inner.omega_cauchy_outside(&s)
         };
         arg.exp() / vp.sqrt()
     }

@@ -23,8 +23,10 @@
 //! ```
 //!
 //! The u-integrand is analytic on [0, p^2] (the nearest singularity of omega is the branch
-//! point u = m^2 of |p2|), so one Gauss-Legendre rule in u, with omega tabulated on its nodes
-//! once per case ([`InnerRule`]), serves every evaluation of b, S0 and Lambda0.
+//! point u = m^2 of |p2|), so one Gauss-Legendre rule, with omega tabulated on its nodes once
+//! per case ([`InnerRule`]), serves every evaluation of b, S0 and Lambda0. The rule is
+//! Gauss-Legendre in t = ln sqrt(m^2 - u), which sends that branch point to t = -inf and needs
+//! a third to a half fewer nodes than a rule in u (`docs/inner-rule.md`).
 //! Near the segment, Lambda0 subtracts omega at zeta^2 (continued analytically) and adds
 //! omega(zeta^2) ln((p^2 - zeta^2)/(-zeta^2)) in closed form, so its boundary values are
 //!
@@ -368,31 +370,73 @@ pub(crate) struct TanForm<T> {
     a: T,
 }
 
-/// First guess of the Gauss-Legendre degree for the u-integrals over [0, p^2] at `prec` bits.
+/// The interval of the inner rule's variable t = ln sqrt(m^2 - u), [ln sqrt(m^2 - p^2), ln m],
+/// as (centre, half-width) in f64: the half-width is -(1/4) ln(1 - p^2/m^2).
+fn log_interval(m: f64, p: f64) -> (f64, f64) {
+    let half = -0.25 * (-(p / m).powi(2)).ln_1p();
+    (m.ln() - half, half)
+}
+
+/// The Bernstein-ellipse parameter of a point z of the complex t-plane with respect to the
+/// t-interval (centre, half-width): the rule's error for a pole or branch point at z falls
+/// like rho^(-2n). Infinite (or NaN) for points at infinity.
+fn ellipse_parameter(z: num_complex::Complex<f64>, centre: f64, half: f64) -> f64 {
+    let zeta = (z - centre) / half;
+    let w = zeta + (zeta - 1.0).sqrt() * (zeta + 1.0).sqrt();
+    let r = w.norm();
+    r.max(1.0 / r)
+}
+
+/// First guess of the Gauss-Legendre degree of the inner rule at `prec` bits.
 ///
-/// The nearest singularity of omega(u) on the real axis is the branch point u = m^2, which
-/// lies on the Bernstein ellipse of parameter rho = a + sqrt(a^2 - 1), a = 2 m^2/p^2 - 1, of
-/// [0, p^2]; the rule's error then falls like rho^(-2n), so n = prec ln 2/(2 ln rho) nodes
-/// reach the working precision. A margin of 10 percent plus 4 nodes covers the prefactor
-/// (the estimate is sharp: at 365 bits and p = 0.3, n itself already agrees with 2n to the
-/// working precision); the doubling test of [`InnerRule::new`] confirms it (and doubles if a
-/// complex singularity of the arctangent lies closer).
+/// The rule is Gauss-Legendre in t = ln x, x = sqrt(m^2 - u) (`docs/inner-rule.md`): the
+/// branch point u = m^2 of omega goes to t = -inf, and the nearest singularities left are
+/// those of Lambda0(s) for s in (m^2, 1), whose poles u = s lie at t = ln sqrt(s - m^2) +- i pi/2,
+/// at worst straight above the centre of the interval: rho = b + sqrt(b^2 + 1),
+/// b = (pi/2)/half-width (the branch point u = 1 of |p1|, at the same height and further out,
+/// is no nearer). The rule's error then falls like rho^(-2n), so n = prec ln 2/(2 ln rho) nodes
+/// reach the working precision. A margin of 5 percent plus 2 nodes covers the prefactor (the
+/// rule of that size passes the doubling test of [`InnerRule::new`] from f64 to 365 bits and
+/// p from 0.02 to 0.99 m_R, see the test `predicted_rule_is_accepted`); the doubling test
+/// confirms it in every case (and doubles if a complex singularity of the arctangent lies
+/// closer).
 pub fn predicted_nodes(m: f64, p: f64, prec: u32) -> usize {
+    let (_, half) = log_interval(m, p);
+    let b = std::f64::consts::FRAC_PI_2 / half.max(1e-300);
+    let rho = b + b.hypot(1.0);
+    let n = f64::from(prec) * std::f64::consts::LN_2 / (2.0 * rho.ln().max(1e-3));
+    ((1.05 * n).ceil() as usize + 2).clamp(16, 4096)
+}
+
+/// First guess of the degree of the fallback rule in u itself ([`InnerRule::new`]): the
+/// branch point u = m^2 lies on the Bernstein ellipse of [0, p^2] of parameter
+/// rho = a + sqrt(a^2 - 1), a = 2 m^2/p^2 - 1, with a margin of 10 percent plus 4 nodes.
+fn predicted_nodes_u(m: f64, p: f64, prec: u32) -> usize {
     let a = 2.0 * (m / p).powi(2) - 1.0;
     let rho = a + (a * a - 1.0).max(0.0).sqrt();
     let n = f64::from(prec) * std::f64::consts::LN_2 / (2.0 * rho.ln().max(1e-3));
     ((1.1 * n).ceil() as usize + 4).clamp(16, 4096)
 }
 
-/// Omega - Omega0 tabulated on a Gauss-Legendre rule in u over [0, p^2]: the one table behind
-/// b, S0 and Lambda0.
+/// Omega - Omega0 tabulated on a Gauss-Legendre rule over [0, p^2]: the one table behind
+/// b, S0 and Lambda0. The rule is Gauss-Legendre in t = ln sqrt(m^2 - u) (see
+/// [`predicted_nodes`] and `docs/inner-rule.md`), carried back to nodes u_j and weights w_j in u.
 #[derive(Clone, Debug)]
 pub struct InnerRule<T> {
     p2: T,
+    /// Whether the rule is Gauss-Legendre in t (otherwise in u: the fallback of
+    /// [`InnerRule::new`]).
+    log_var: bool,
+    /// Centre and half-width of the t-interval (f64: they decide the form of a Lambda0 sum).
+    log_centre: f64,
+    log_half: f64,
     /// (u_j, w_j, omega(u_j)) with omega = Omega - Omega0.
     nodes: Vec<(T, T, T)>,
     /// w_j omega(u_j), the numerators of the unsubtracted sums.
     w_om: Vec<T>,
+    /// w_j Omega(u_j) = w_j (omega(u_j) + Omega0), the numerators of
+    /// [`InnerRule::omega_cauchy_outside`].
+    w_big_om: Vec<T>,
     /// w_j in f64: the node spacing that decides where a divided difference is needed.
     w_f64: Vec<f64>,
     /// tan(pi Omega) in parts at each node, for the divided differences of nodes close to the
@@ -405,34 +449,92 @@ pub struct InnerRule<T> {
 impl<T: CachedRules> InnerRule<T> {
     /// Build the rule for contact speed p, doubling the number of nodes until S0 and b at
     /// two interior points agree between n and 2n to the working precision.
+    ///
+    /// Should the rule in t not converge within six doublings (an arctangent branch point close
+    /// to u = 0, where t compresses [0, p^2] the most: nu = 0.4999 with gamma = 1e6), the same
+    /// doubling runs on a rule in u itself.
     pub fn new(omega: &OmegaFn<T>, p: &T) -> Result<Self> {
         let prec = p.prec();
         let p2 = p.clone().sqr();
-        let mut n = predicted_nodes(omega.rayleigh().m().to_f64(), p.to_f64(), prec);
-        let mut prev: Option<Self> = None;
-        let mut last_d: Option<f64> = None;
         let eps = p.epsilon().to_f64().max(1e-300);
         if omega.is_zero() {
             // Omega = 0 (beta + gamma = 0): b, S0 and Lambda0 vanish identically. No rule is
             // built and every sum over the (empty) nodes is an exact zero.
             return Ok(InnerRule {
                 p2,
+                log_var: true,
+                log_centre: 0.0,
+                log_half: 1.0,
                 nodes: Vec::new(),
                 w_om: Vec::new(),
+                w_big_om: Vec::new(),
                 w_f64: Vec::new(),
                 forms: Vec::new(),
                 error: 0.0,
             });
         }
+        let (m, pf) = (omega.rayleigh().m().to_f64(), p.to_f64());
+        let mut reached = f64::INFINITY;
+        for log_var in [true, false] {
+            let n = if log_var {
+                predicted_nodes(m, pf, prec)
+            } else {
+                predicted_nodes_u(m, pf, prec)
+            };
+            match Self::doubled(omega, p, n, log_var)? {
+                Ok(rule) => return Ok(rule),
+                Err(d) => reached = d,
+            }
+        }
+        Err(WedgeError::NoConvergence {
+            what: "Gauss-Legendre rule for Lambda0".into(),
+            reached,
+            asked: eps,
+        })
+    }
+
+    /// The doubling test from n nodes in t (`log_var`) or in u: the accepted rule, or the
+    /// last difference found.
+    fn doubled(
+        omega: &OmegaFn<T>,
+        p: &T,
+        mut n: usize,
+        log_var: bool,
+    ) -> Result<std::result::Result<Self, f64>> {
+        let p2 = p.clone().sqr();
+        let eps = p.epsilon().to_f64().max(1e-300);
+        let mut prev: Option<Self> = None;
+        let mut last_d: Option<f64> = None;
         for _ in 0..6 {
-            let rule = Self::with_nodes(omega, &p2, n)?;
+            let rule = Self::with_nodes(omega, &p2, n, log_var)?;
             if let Some(pr) = &prev {
                 let mut d = 0.0_f64;
                 let mut scale = 1e-300_f64;
-                let probes = [p.zero(), p.clone() * 0.5, p.clone() * 0.97];
-                for xi in &probes {
-                    let a = rule.b(omega, xi);
-                    let b = pr.b(omega, xi);
+                // b on the contact and between p and m, and Lambda0 at the worst real point
+                // of (m^2, 1): u = s at t = centre +- i pi/2 (see `predicted_nodes`)
+                let m = omega.rayleigh().m();
+                let probes = [
+                    p.zero(),
+                    p.clone() * 0.5,
+                    p.clone() * 0.97,
+                    (p.clone() + m) / 2.0,
+                ];
+                let x_c = p.lit(2.0 * rule.log_centre).exp();
+                let s_c = omega.rayleigh().m2().clone() + x_c;
+                let values = probes
+                    .iter()
+                    .map(|xi| (rule.b(omega, xi), pr.b(omega, xi)))
+                    .chain([
+                        (
+                            rule.lambda0_real_outside(&s_c),
+                            pr.lambda0_real_outside(&s_c),
+                        ),
+                        (
+                            rule.omega_cauchy_outside(&s_c),
+                            pr.omega_cauchy_outside(&s_c),
+                        ),
+                    ]);
+                for (a, b) in values {
                     d = d.max((a.clone() - &b).abs().to_f64());
                     scale = scale.max(a.abs().to_f64()).max(1.0);
                 }
@@ -444,41 +546,68 @@ impl<T: CachedRules> InnerRule<T> {
                     // rule, with the difference as its error estimate.
                     let mut r = prev.take().expect("previous rule");
                     r.error = d;
-                    return Ok(r);
+                    return Ok(Ok(r));
                 }
             }
             prev = Some(rule);
             n *= 2;
         }
-        Err(WedgeError::NoConvergence {
-            what: "Gauss-Legendre rule for Lambda0".into(),
-            reached: prev.map(|r| r.error).unwrap_or(f64::INFINITY),
-            asked: eps,
-        })
+        Ok(Err(last_d.unwrap_or(f64::INFINITY)))
     }
 
-    fn with_nodes(omega: &OmegaFn<T>, p2: &T, n: usize) -> Result<Self> {
+    /// The rule of n nodes in t = ln x, x = sqrt(m^2 - u), t in [t_p, t_m] = [ln sqrt(m^2 - p^2), ln m]:
+    /// with h = (t_m - t_p)/2 = -(1/4) ln(1 - p^2/m^2) and tau_j the Gauss-Legendre nodes on
+    /// [-1, 1], x_j^2 = m^2 exp(-2 h (1 - tau_j)), u_j = -m^2 expm1(-2 h (1 - tau_j)) (full
+    /// relative accuracy as u_j -> 0) and w_j = 2 h x_j^2 w_tau_j (du = -2 x^2 dt).
+    ///
+    /// Without `log_var` the rule is Gauss-Legendre in u itself: u_j = (p^2/2)(1 + tau_j),
+    /// w_j = (p^2/2) w_tau_j.
+    fn with_nodes(omega: &OmegaFn<T>, p2: &T, n: usize, log_var: bool) -> Result<Self> {
         let rule = gauss_legendre_rule::<T>(n, p2.prec())?;
-        let half = p2.clone() / 2.0;
+        let m2 = omega.rayleigh().m2().clone();
+        let half = -(-(p2.clone() / &m2)).ln_1p() / 4.0;
+        let half_u = p2.clone() / 2.0;
+        let (log_centre, log_half) =
+            log_interval(omega.rayleigh().m().to_f64(), p2.to_f64().sqrt());
         let form0 = omega.tan_form(&p2.zero());
         let mut forms = Vec::with_capacity(n);
         let nodes: Vec<(T, T, T)> = rule
             .iter()
-            .map(|(x, w)| {
-                let u = half.clone() * (x.clone() + 1.0);
+            .map(|(tau, w)| {
+                let (u, wu) = if log_var {
+                    let e = ((p2.one() - tau) * &half * -2.0).exp_m1();
+                    let u = -(m2.clone() * &e);
+                    let x2 = m2.clone() - &u;
+                    (u, w.clone() * &half * x2 * 2.0)
+                } else {
+                    (half_u.clone() * (tau.clone() + 1.0), w.clone() * &half_u)
+                };
                 // omega(u) = u (Omega(u) - Omega(0))/(u - 0), free of cancellation
                 let f = omega.tan_form(&u);
                 let om = omega.divided_difference(&f, &form0) * &u;
                 forms.push(f);
-                (u, w.clone() * &half, om)
+                (u, wu, om)
             })
             .collect();
-        let w_om = nodes.iter().map(|(_, w, om)| om.clone() * w).collect();
+        let w_om: Vec<T> = nodes.iter().map(|(_, w, om)| om.clone() * w).collect();
+        let w_big_om = nodes
+            .iter()
+            .zip(&w_om)
+            .map(|((_, w, _), w_om)| {
+                let mut t = w_om.clone();
+                t.mul_add_assign(w, omega.omega0());
+                t
+            })
+            .collect();
         let w_f64 = nodes.iter().map(|(_, w, _)| w.to_f64()).collect();
         Ok(InnerRule {
             p2: p2.clone(),
+            log_var,
+            log_centre,
+            log_half,
             nodes,
             w_om,
+            w_big_om,
             w_f64,
             forms,
             error: f64::INFINITY,
@@ -526,7 +655,12 @@ impl<T: Real> InnerRule<T> {
         let mut s_form: Option<TanForm<T>> = None;
         let mut d = s.zero();
         let mut t = s.zero();
-        for (j, ((u, w, om), &w_f)) in self.nodes.iter().zip(&self.w_f64).enumerate() {
+        for (j, ((u, w, _), (w_om, &w_f))) in self
+            .nodes
+            .iter()
+            .zip(self.w_om.iter().zip(&self.w_f64))
+            .enumerate()
+        {
             d.clone_from(u);
             d -= s;
             if d.to_f64().abs() < w_f {
@@ -534,9 +668,9 @@ impl<T: Real> InnerRule<T> {
                 acc += omega.divided_difference(&self.forms[j], sf) * w;
                 continue;
             }
-            t.clone_from(om);
-            t -= om_s;
-            t *= w;
+            // w_j omega_j - omega(s) w_j, one fused rounding
+            t.clone_from(w_om);
+            t.mul_sub_assign(om_s, w);
             t /= &d;
             acc += &t;
         }
@@ -552,7 +686,29 @@ impl<T: Real> InnerRule<T> {
         acc
     }
 
-    /// Lambda0 at a real s = v^2 > p^2 (no subtraction; used for v >= m), summed in place.
+    /// Int_0^{p^2} Omega(u)/(u - s) du = Omega0 ln(1 - p^2/s) + Lambda0(s) at a real s >= m^2
+    /// (v >= m): the exponent of H(v)/v sqrt(v^2 - p^2) there, summed in place without a
+    /// logarithm.
+    ///
+    /// The rule resolves the pole u = s for s >= m^2 whatever the numerator's constant part
+    /// (its nodes are placed for the pole, see [`predicted_nodes`]; the doubling test of
+    /// [`InnerRule::new`] checks this sum), so the closed-form Omega0 ln(1 - p^2/s) is not
+    /// needed: the terms w_j Omega(u_j)/(u_j - s) have one sign and no cancellation.
+    pub fn omega_cauchy_outside(&self, s: &T) -> T {
+        let mut acc = s.zero();
+        let mut d = s.zero();
+        let mut t = s.zero();
+        for ((u, _, _), w_big_om) in self.nodes.iter().zip(&self.w_big_om) {
+            d.clone_from(u);
+            d -= s;
+            t.clone_from(w_big_om);
+            t /= &d;
+            acc += &t;
+        }
+        acc
+    }
+
+    /// Lambda0 at a real s = v^2 > p^2 (no subtraction), summed in place.
     pub fn lambda0_real_outside(&self, s: &T) -> T {
         let mut acc = s.zero();
         let mut d = s.zero();
@@ -573,21 +729,32 @@ impl<T: Real> InnerRule<T> {
             return Cx::real(zeta.re.zero());
         }
         let s = zeta.clone() * zeta;
-        // Semi-major axis (in units of p^2/2) of the ellipse with foci 0, p^2 through s.
-        let d0 = s.abs();
-        let d1 = s.clone().add_re(&(-self.p2.clone())).abs();
-        let a = (d0 + d1) / &self.p2;
-        let m2 = omega.rayleigh().m2().clone();
-        // The plain sum of omega(u)/(u - s) converges like rho_s^(-2n), rho_s = a + sqrt(a^2 - 1)
-        // the ellipse parameter of s: it is used only where that reaches the working
-        // precision (with a factor 4 of margin in the exponent); closer to the segment the
-        // subtracted form, whose integrand is analytic, is summed. That form needs omega(s),
-        // analytic inside the ellipse through the branch point u = m^2.
+        // The plain sum of omega(u)/(u - s) converges like rho_s^(-2n), rho_s the ellipse
+        // parameter of the pole t_s = ln sqrt(m^2 - s) (principal; its images t_s +- i pi are
+        // further away) in the rule's variable t: it is used only where that reaches the working
+        // precision (with a factor 4 of margin in the exponent). Closer to the segment the
+        // subtracted form is summed: omega(s) (principal square roots, which continue omega(u)
+        // in x = sqrt(m^2 - u)) removes the pole at t_s, and the poles left, t_s +- i pi, are
+        // never nearer than the singularities the rule is built for.
         let n = self.nodes.len().max(1) as f64;
         let rho = 2f64.powf(1.25 * f64::from(s.re.prec()) / (2.0 * n));
-        let a_plain = s.re.lit(0.5 * (rho + 1.0 / rho));
-        let limit = (m2 * 2.0 / &self.p2 - 1.01).min(a_plain);
-        if a < limit {
+        let m2 = omega.rayleigh().m2().to_f64();
+        let t_s = (num_complex::Complex::new(m2, 0.0) - s.to_c64())
+            .sqrt()
+            .ln();
+        let rho_s = ellipse_parameter(t_s, self.log_centre, self.log_half);
+        // NaN (s = m^2, t_s = -inf) is far from the segment: the plain sum
+        let subtract = if self.log_var {
+            rho_s < rho
+        } else {
+            // the rule in u: the ellipse of s about [0, p^2] (semi-major axis a in units of
+            // p^2/2), the subtracted form inside the ellipse through the branch point u = m^2
+            let a = (s.abs() + s.clone().add_re(&(-self.p2.clone())).abs()) / &self.p2;
+            let a_plain = s.re.lit(0.5 * (rho + 1.0 / rho));
+            let limit = (omega.rayleigh().m2().clone() * 2.0 / &self.p2 - 1.01).min(a_plain);
+            a < limit
+        };
+        if subtract {
             let om_s = omega.omega_rel(&s);
             let mut acc = Cx::real(s.re.zero());
             let mut s_form: Option<TanForm<Cx<T>>> = None;
@@ -720,6 +887,97 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn inner_sums_match_an_independent_quadrature() {
+        // S0, b (on the contact and between p and m) and Lambda0 (real s in (m^2, 1) above the
+        // rule's worst point, complex s near the segment) from the rule in t = ln sqrt(m^2 - u),
+        // against tanh-sinh in u at 256 bits: the benchmark case, close to the Rayleigh speed,
+        // strong friction
+        use complexfn::quadrature::{tanh_sinh, Point, TsOptions};
+        let like = Float::with_val(256, 0);
+        for (beta, gamma, p) in [(-0.0175, 0.6, 0.3), (-0.0175, 0.6, 0.49), (-1.0, 3.0, 0.25)] {
+            let om = omega_fn(&like, beta, gamma);
+            let pb = like.lit(p);
+            let rule = InnerRule::new(&om, &pb).unwrap();
+            let p2 = pb.clone().sqr();
+            let m = om.rayleigh().m().clone();
+            let w = |u: &Float| om.omega_rel(&Cx::real(u.clone())).re;
+            let quad = |f: &dyn Fn(&Float) -> Cx<Float>| {
+                tanh_sinh(
+                    &like.zero(),
+                    &p2,
+                    TsOptions::new(1e-72),
+                    |pt: &Point<Float>| f(&pt.v),
+                )
+                .unwrap()
+                .value
+            };
+            let close = |got: Cx<Float>, exact: Cx<Float>, what: &str| {
+                let err = (got - exact.clone()).abs().to_f64();
+                assert!(err < 1e-66, "p {p}, gamma {gamma}, {what}: error {err:e}");
+            };
+            let s0 = quad(&|u: &Float| Cx::real(w(u) / u));
+            close(Cx::real(rule.s0()), s0, "S0");
+            let probes: [Float; 2] = [pb.clone() * 0.5, (pb.clone() + &m) / 2.0];
+            for xi in probes {
+                let s = xi.clone().sqr();
+                let ws = om.omega(&xi) - om.omega0();
+                let b = quad(&|u: &Float| Cx::real((w(u) - &ws) / (u.clone() - &s)));
+                close(Cx::real(rule.b(&om, &xi)), b, "b");
+            }
+            let s_c = m.clone().sqr() + like.lit(2.0 * rule.log_centre).exp();
+            let lam = quad(&|u: &Float| Cx::real(w(u) / (u.clone() - &s_c)));
+            close(
+                Cx::real(rule.lambda0_real_outside(&s_c)),
+                lam,
+                "Lambda0 real",
+            );
+            // Int Omega/(u - s) for s in [m^2, 1), without the closed-form logarithm
+            let om0 = om.omega0().clone();
+            let m2 = m.clone().sqr();
+            for s in [s_c.clone(), m2.clone() * 1.001, like.lit(0.999), m2 * 1.5] {
+                let exact = quad(&|u: &Float| Cx::real((w(u) + &om0) / (u.clone() - &s)));
+                close(
+                    Cx::real(rule.omega_cauchy_outside(&s)),
+                    exact,
+                    "Int Omega/(u - s)",
+                );
+            }
+            for s in [
+                Cx::new(p2.clone() * 0.4, like.lit(0.01)),
+                Cx::new(-(p2.clone()) * 0.3, like.lit(0.02)),
+                Cx::new(m.clone().sqr() * 1.5, like.lit(0.05)),
+            ] {
+                let lam = quad(&|u: &Float| Cx::real(w(u)) / &(Cx::real(u.clone()) - s.clone()));
+                close(rule.lambda0(&om, &s.clone().sqrt()), lam, "Lambda0 complex");
+            }
+        }
+    }
+
+    #[test]
+    fn predicted_rule_is_accepted() {
+        // the first guess passes the doubling test (no rule twice the size is kept): f64,
+        // double-double and MPFR at 133 and 365 bits, slow to close to the Rayleigh speed,
+        // weak and strong friction
+        fn check<T: CachedRules>(like: &T) {
+            for (beta, gamma) in [(-0.0175, 0.6), (-1.0, 3.0), (-0.1, 0.05)] {
+                let om = omega_fn(like, beta, gamma);
+                let m = om.rayleigh().m().to_f64();
+                let m_r = om.rayleigh().m_r().to_f64();
+                for frac in [0.02, 0.3, 0.6, 0.9, 0.99] {
+                    let p = m_r * frac;
+                    let rule = InnerRule::new(&om, &like.lit(p)).unwrap();
+                    let n = predicted_nodes(m, p, like.prec());
+                    assert_eq!(rule.len(), n, "{} bits, gamma {gamma}, p {p}", like.prec());
+                }
+            }
+        }
+        check(&0.0_f64);
+        check(&complexfn::Dd::from_f64(0.0));
+        check(&Float::with_val(133, 0));
+        check(&Float::with_val(365, 0));
     }
 
     fn rd(a: &Float, b: &Float) -> f64 {
