@@ -55,6 +55,21 @@ pub fn t_max_for(bits: u32, e: f64) -> f64 {
 /// the integrand behaves like offset^(e - 1). `from_a` is the offset from the
 /// single-exponential end.
 pub fn se_de_unit<T: Real>(like: &T, h: f64, s_se: f64, bits: u32, e: f64) -> Vec<UnitNode<T>> {
+    se_de_unit_indexed(like, h, s_se, bits, e)
+        .into_iter()
+        .map(|(_, u)| u)
+        .collect()
+}
+
+/// [`se_de_unit`] with the index k of each node (s = k h): the nodes of even k are the rule of
+/// step 2h, the coarser level of the level-doubling error probe.
+pub fn se_de_unit_indexed<T: Real>(
+    like: &T,
+    h: f64,
+    s_se: f64,
+    bits: u32,
+    e: f64,
+) -> Vec<(i64, UnitNode<T>)> {
     let reach = (f64::from(bits) / e.clamp(0.05, 1.0) + 6.0) * std::f64::consts::LN_2;
     let s_hi = reach.ln();
     let k_lo = (-s_se / h).floor() as i64;
@@ -77,11 +92,14 @@ pub fn se_de_unit<T: Real>(like: &T, h: f64, s_se: f64, bits: u32, e: f64) -> Ve
         };
         let w = e * dpsi * h / opl.sqr();
         if da > 0.0 && db > 0.0 && w > 0.0 {
-            out.push(UnitNode {
-                from_a: da,
-                to_b: db,
-                w,
-            });
+            out.push((
+                k,
+                UnitNode {
+                    from_a: da,
+                    to_b: db,
+                    w,
+                },
+            ));
         }
     }
     out

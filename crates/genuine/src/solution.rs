@@ -45,7 +45,14 @@ impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
         let error = error + self.rayleigh_error(&value);
         Ok(WithError { value, error })
     }
-    /// The stress with V's relative estimate (both come from the same basis).
+    /// V's relative estimate plus the contour integrals' error of the solution's scale (the
+    /// stress is proportional to the coefficients, V is not).
+    fn rel_error(&self) -> WResult<f64> {
+        let v = ContactSolution::v_hat(self)?;
+        Ok(v.error / v.value.to_f64().abs() + self.contour_scale_error())
+    }
+    /// The stress with the relative estimate of [`ContactSolution::rel_error`] (V and the
+    /// stress come from the same basis).
     fn stress_hat(&self, x: &T) -> WResult<WithError<T>> {
         let value = GenuineCase::stress_hat(self, x.clone())?;
         let rel = ContactSolution::rel_error(self)?;

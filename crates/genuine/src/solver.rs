@@ -73,6 +73,11 @@ pub fn roundoff_floor(bits: u32) -> f64 {
     ROUNDOFF_FLOOR * 2f64.powi(53 - bits.max(53) as i32)
 }
 
+/// The margin on the difference between the fine fit and the fit of the same degree on
+/// another collocation set (the plateau of the least-squares solve, see
+/// [`GenuineCase::error_estimate`]). The difference is a sample of the scatter, not a bound.
+pub const PLATEAU_MARGIN: f64 = 4.0;
+
 /// Reach of the tanh rule behind the F-functions at 53 bits, in units of its variable
 /// (offsets down to e^(-100) of the interval). The rule used now is the mixed map of
 /// [`crate::quad::se_de_unit`], whose reach follows the precision ([`v_rule_s_max`]).
@@ -119,7 +124,10 @@ impl SolveOptions {
     /// The defaults for a working precision of `bits` bits (53 for f64), chosen so that every
     /// discretisation error is of the order of 2^-bits:
     ///
-    /// * `h_tanh = pi^2/((bits + 4) ln 2)` (the v-rule's error is exp(-pi^2/h));
+    /// * `h_tanh = (3/4) pi^2/((bits + 4) ln 2)` (the v-rule's error is exp(-c/h), c = pi^2
+    ///   for a pole above the split point; next to the Rayleigh speed c falls to about
+    ///   (3/4) pi^2, 3.7e-32 instead of 1e-41 at 132 bits with the factor 1; the level-doubling
+    ///   probe of the solve reports what is left);
     /// * `h_quad = 1/32 * (53/bits)^(1/2)` (the rows' integrands are analytic inside the
     ///   tanh-sinh strip except at the ends, where the rule is double-exponential; measured at
     ///   128 bits, halving `h_quad` from this value changes nothing above 1e-37);
@@ -143,7 +151,7 @@ impl SolveOptions {
             oversample: if bits <= 64 { 2.0 } else { 1.5 },
             h_quad: 1.0 / 32.0 * (53.0 / b).sqrt(),
             contour_tol: 2f64.powi(-(b as i32 - 7)),
-            h_tanh: std::f64::consts::PI.powi(2) / ((b + 4.0) * std::f64::consts::LN_2),
+            h_tanh: 0.75 * std::f64::consts::PI.powi(2) / ((b + 4.0) * std::f64::consts::LN_2),
             apex_lambdas: None,
         }
     }
@@ -205,6 +213,60 @@ struct Fit<T> {
     residual: f64,
 }
 
+/// The error of the contour integrals behind the scale of the solution (the slope condition
+/// U_y' + beta U_x' = 1 at x*) and V_hat, from the level-doubling probe of their v-rule (the
+/// same load summed on the nodes of step 2h) and the y-rule's own estimate.
+#[derive(Clone, Copy, Debug)]
+struct ContourProbe {
+    /// |V_hat(h) - V_hat(2h)|.
+    v_diff: f64,
+    /// |slope(2h)/slope(h) - 1|.
+    scale_diff: f64,
+    /// The y-rule's estimated error of the slope and of V_hat, relative to the slope.
+    y_rel: f64,
+}
+
+/// The margin of the contour probe's extrapolation (see [`ContourProbe`]): the error of the
+/// rule of step h is taken as `CONTOUR_MARGIN` d^2/|q| from d = |q(h) - q(2h)|. Measured at
+/// 132 bits (Theta 89 deg, gamma 0.6), the actual error was 3.5 (p = 0.3) to 350 (p = 0.45,
+/// 0.495, next to the Rayleigh speed) times d^2 (q of order 0.4): the margin keeps the estimate
+/// at least 30 times above the error.
+pub const CONTOUR_MARGIN: f64 = 1e4;
+
+impl ContourProbe {
+    /// The error of a quantity of size `size` whose rules of steps h and 2h differ by `d`:
+    /// the rule converges like exp(-c/h), so e(h) ~ e(2h)^2/A; taken as
+    /// [`CONTOUR_MARGIN`] d^2/size while that is below d (d < size/[`CONTOUR_MARGIN`]),
+    /// otherwise d itself.
+    fn extrapolate(d: f64, size: f64) -> f64 {
+        if size > 0.0 && d * CONTOUR_MARGIN < size {
+            CONTOUR_MARGIN * d * d / size
+        } else {
+            d
+        }
+    }
+
+    /// The absolute error of V_hat (of size `v`) from the contour integrals.
+    fn v_error(&self, v: f64) -> f64 {
+        Self::extrapolate(self.v_diff, v.abs()) + self.y_rel * (1.0 + v.abs())
+    }
+
+    /// The relative error of the solution's scale (of every quantity proportional to the
+    /// coefficients) from the contour integrals.
+    fn scale_error(&self) -> f64 {
+        Self::extrapolate(self.scale_diff, 1.0) + self.y_rel
+    }
+
+    fn new<T: Real>(slope: &T, v_hat: &T, slope_2h: &T, v_hat_2h: &T, y_err: f64, beta: &T) -> Self {
+        let s = slope.to_f64().abs();
+        ContourProbe {
+            v_diff: (v_hat.clone() - v_hat_2h).abs().to_f64(),
+            scale_diff: (slope_2h.clone() / slope - 1.0).abs().to_f64(),
+            y_rel: y_err * (1.0 + beta.to_f64().abs()) / s,
+        }
+    }
+}
+
 /// The solved genuine case, at the precision of the contact speed it was solved for (`f64` by
 /// default).
 #[derive(Clone, Debug)]
@@ -215,6 +277,10 @@ pub struct GenuineCase<T = f64> {
     coarse: Fit<T>,
     /// The solve at degree 3N/4.
     middle: Fit<T>,
+    /// Above f64: the solve at degree N on another collocation set (a quarter more points).
+    other_points: Option<Fit<T>>,
+    /// The error of the contour rule behind the slope and V_hat.
+    contour: ContourProbe,
     opts: SolveOptions,
     /// The apex exponents, amplitude and its estimate ([`GenuineCase::apex_with_error`]),
     /// computed once on demand.
@@ -300,15 +366,19 @@ impl<T: Real> Problem<T> {
     }
 
     /// The v-rule of the contour integrals at x0 in (0, p), sampled: the mixed rule of
-    /// [`crate::quad::se_de_unit`] on (0, x0) and (x0, p), single-exponential at x0.
-    fn contour_samples(&self, basis: &Basis<T>, x0: &T, h: f64) -> Vec<Sample<T>> {
+    /// [`crate::quad::se_de_unit`] on (0, x0) and (x0, p), single-exponential at x0; with, per
+    /// sample, whether it is a node of the rule of step 2h (the coarser level of the probe).
+    fn contour_samples(&self, basis: &Basis<T>, x0: &T, h: f64) -> (Vec<Sample<T>>, Vec<bool>) {
         let e = self.tail_exponent(basis);
-        let unit = crate::quad::se_de_unit(&self.p, h, v_rule_s_max(self.prec), self.prec, e);
+        let unit =
+            crate::quad::se_de_unit_indexed(&self.p, h, v_rule_s_max(self.prec), self.prec, e);
         let p = &self.p;
         let left = x0.clone();
         let right = p.clone() - x0;
         let mut out = Vec::with_capacity(2 * unit.len());
-        for u in &unit {
+        let mut coarse = Vec::with_capacity(2 * unit.len());
+        for (k, u) in &unit {
+            coarse.extend([k % 2 == 0; 2]);
             // (0, x0): the single-exponential end is x0
             let d_x0 = u.from_a.clone() * &left;
             let d_0 = u.to_b.clone() * &left;
@@ -328,7 +398,7 @@ impl<T: Real> Problem<T> {
             };
             out.push(self.sample(basis, v, d_p, u.w.clone() * &right));
         }
-        out
+        (out, coarse)
     }
 
     /// The collocation points: Chebyshev points of (0, p) moved to the nearest quarter point
@@ -577,9 +647,9 @@ impl<T: Real> Problem<T> {
         Ok((coef, res))
     }
 
-    /// Scale the coefficients so that U_y' + beta U_x' = 1 at xs, from the contour
-    /// functionals `u` of the unscaled solution, and return V_hat = xs - U_y - beta U_x.
-    fn normalise(&self, coef: &mut [T], u: [T; 4], xs: &T) -> Result<T> {
+    /// The slope U_y' + beta U_x' at xs and V_hat = xs - (U_y + beta U_x)/slope, from the
+    /// contour functionals `u` of an unscaled solution.
+    fn slope_and_v_hat(&self, u: [T; 4], xs: &T) -> Result<(T, T)> {
         let [uy, ux, duy, dux] = u;
         let slope = duy + self.beta.clone() * &dux;
         let value = uy + self.beta.clone() * &ux;
@@ -590,7 +660,6 @@ impl<T: Real> Problem<T> {
                 detail: format!("degenerate slope at p = {}", self.p.to_f64()),
             });
         }
-        coef.iter_mut().for_each(|c| *c /= &slope);
         let v_hat = xs.clone() - value / &slope;
         if !v_hat.is_finite() {
             return Err(GenuineError::NoConvergence {
@@ -598,7 +667,15 @@ impl<T: Real> Problem<T> {
                 detail: format!("non-finite V_hat at p = {}", self.p.to_f64()),
             });
         }
-        Ok(v_hat)
+        Ok((slope, v_hat))
+    }
+
+    /// Scale the coefficients so that U_y' + beta U_x' = 1 at xs, from the contour
+    /// functionals `u` of the unscaled solution, and return (slope, V_hat).
+    fn normalise(&self, coef: &mut [T], u: [T; 4], xs: &T) -> Result<(T, T)> {
+        let (slope, v_hat) = self.slope_and_v_hat(u, xs)?;
+        coef.iter_mut().for_each(|c| *c /= &slope);
+        Ok((slope, v_hat))
     }
 }
 
@@ -631,7 +708,7 @@ impl<T: CachedRules> GenuineCase<T> {
         let sizes = [opts.degree / 2, 3 * opts.degree / 4 / 2 * 2];
         let rows = prob.row_samples(&basis, opts.h_quad);
         let xs = prob.p.clone() * NORMALISATION_POINT;
-        let cont = prob.contour_samples(&basis, &xs, opts.h_tanh);
+        let (cont, on_coarse) = prob.contour_samples(&basis, &xs, opts.h_tanh);
         let (mut coef, residual) = prob.fit(&basis, &rows, &opts)?;
         let mut fits = Vec::with_capacity(sizes.len());
         for &n in &sizes {
@@ -639,21 +716,38 @@ impl<T: CachedRules> GenuineCase<T> {
             let (c, r) = prob.fit(&b, &rows, &opts)?;
             fits.push((b, c, r));
         }
+        // the plateau probe: degree N on another collocation set (above f64 only)
+        let plateau = prob.prec > 64;
+        if plateau {
+            let other = SolveOptions {
+                oversample: opts.oversample * 1.25,
+                ..opts.clone()
+            };
+            let (c, r) = prob.fit(&basis, &rows, &other)?;
+            fits.push((basis.clone(), c, r));
+        }
         let mut hws = vec![prob.weighted_slopes(&basis, &cont, &coef)];
         for (b, c, _) in &fits {
             hws.push(prob.weighted_slopes(b, &cont, c));
         }
+        // the level-doubling probe of the v-rule: the fine load on the nodes of step 2h
+        let probe: Vec<T> = hws[0]
+            .iter()
+            .zip(&on_coarse)
+            .map(|(h, &c)| if c { h.clone() * 2.0 } else { h.zero() })
+            .collect();
+        hws.push(probe);
         let loads: Vec<&[T]> = hws.iter().map(|h| h.as_slice()).collect();
-        let (u, _) = prob.contour_many(&cont, &loads, &xs, opts.contour_tol);
+        let (u, y_err) = prob.contour_many(&cont, &loads, &xs, opts.contour_tol);
         let no_value = || GenuineError::NoConvergence {
             what: "contour",
             detail: "no value".into(),
         };
         let mut u = u.into_iter();
-        let v_hat = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
+        let (slope, v_hat) = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
         let mut coarser = Vec::with_capacity(fits.len());
         for (basis, mut coef, residual) in fits {
-            let v_hat = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
+            let (_, v_hat) = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
             coarser.push(Fit {
                 basis,
                 coef,
@@ -664,6 +758,13 @@ impl<T: CachedRules> GenuineCase<T> {
         let mut coarser = coarser.into_iter();
         let coarse = coarser.next().ok_or_else(no_value)?;
         let middle = coarser.next().ok_or_else(no_value)?;
+        let other_points = if plateau {
+            Some(coarser.next().ok_or_else(no_value)?)
+        } else {
+            None
+        };
+        let (slope_2h, v_hat_2h) = prob.slope_and_v_hat(u.next().ok_or_else(no_value)?, &xs)?;
+        let contour = ContourProbe::new(&slope, &v_hat, &slope_2h, &v_hat_2h, y_err, &prob.beta);
         Ok(GenuineCase {
             prob,
             fit: Fit {
@@ -674,6 +775,8 @@ impl<T: CachedRules> GenuineCase<T> {
             },
             coarse,
             middle,
+            other_points,
+            contour,
             opts,
             apex: OnceLock::new(),
         })
@@ -716,6 +819,29 @@ impl<T: CachedRules> GenuineCase<T> {
         self.fit.residual
     }
 
+    /// The contour probe's raw differences: |V_hat(h) - V_hat(2h)| and |slope(2h)/slope(h) - 1|
+    /// of the v-rule of step h = `h_tanh` against its nodes of step 2h, and the y-rule's
+    /// relative estimate.
+    pub fn contour_probe(&self) -> (f64, f64, f64) {
+        (
+            self.contour.v_diff,
+            self.contour.scale_diff,
+            self.contour.y_rel,
+        )
+    }
+
+    /// The differences between the degrees: |V_hat(N) - V_hat(3N/4)| and
+    /// |V_hat(N) - V_hat(N/2)|,
+    /// and, above f64, the difference from the fit of degree N on another collocation set.
+    pub fn degree_differences(&self) -> (f64, f64, Option<f64>) {
+        let d = |f: &Fit<T>| (self.fit.v_hat.clone() - &f.v_hat).abs().to_f64();
+        (
+            d(&self.middle),
+            d(&self.coarse),
+            self.other_points.as_ref().map(d),
+        )
+    }
+
     /// V/(c1 cot Theta).
     pub fn v_hat(&self) -> T {
         self.fit.v_hat.clone()
@@ -729,9 +855,16 @@ impl<T: CachedRules> GenuineCase<T> {
     /// 2e-37 at 128 bits, gamma = 0), the geometric convergence in the degree is extrapolated
     /// from a third size: with d4 = |V_hat(N) - V_hat(3N/4)|, e(N) ~ d4^2/d2 (e(k) = C rho^(-k)
     /// through N/2 and 3N/4), taken with a factor 100 of margin, and only when the sizes
-    /// converge (d4 <= d2/4); otherwise d2.
+    /// converge (d4 <= d2/4); otherwise d2. Where the convergence flattens into the plateau
+    /// of the least-squares solve's conditioning (next to the Rayleigh speed: at 128 bits,
+    /// Theta 89 deg, gamma 0.6, p = 0.495, d2 = 1.9e-28, d4 = 3.1e-33 extrapolate to 5e-36
+    /// for an actual 9e-34), the extrapolation is optimistic; above f64 a second fit of
+    /// degree N on another collocation set (a quarter more points) measures that plateau:
+    /// [`PLATEAU_MARGIN`] times the difference is added. The contour integrals' share comes
+    /// from their own level-doubling probe and is added too.
     pub fn error_estimate(&self) -> f64 {
-        self.estimate_of(true, &self.fit.v_hat, |f| Ok(f.v_hat.clone()))
+        let contour = self.contour.v_error(self.fit.v_hat.to_f64());
+        self.estimate_of(true, contour, &self.fit.v_hat, |f| Ok(f.v_hat.clone()))
             .unwrap_or(f64::INFINITY)
     }
 
@@ -746,11 +879,12 @@ impl<T: CachedRules> GenuineCase<T> {
     fn estimate_of(
         &self,
         extrapolate: bool,
+        contour: f64,
         fine: &T,
         q: impl Fn(&Fit<T>) -> Result<T>,
     ) -> Result<f64> {
         let d2 = (fine.clone() - q(&self.coarse)?).abs().to_f64();
-        let floor = roundoff_floor(self.prob.prec) * fine.to_f64().abs();
+        let floor = self.floor() * fine.to_f64().abs();
         let high = self.prob.prec > 64;
         let d4 = (fine.clone() - q(&self.middle)?).abs().to_f64();
         let d = match (extrapolate, high) {
@@ -759,7 +893,28 @@ impl<T: CachedRules> GenuineCase<T> {
             (false, true) => 10.0 * d4.min(d2),
             (false, false) => 3.0 * d4.max(d2),
         };
-        Ok(d + floor)
+        let plateau = match &self.other_points {
+            Some(f) => PLATEAU_MARGIN * (fine.clone() - q(f)?).abs().to_f64(),
+            None => 0.0,
+        };
+        Ok(d + floor + contour + plateau)
+    }
+
+    /// The relative floor of every estimate: [`roundoff_floor`] of the working precision.
+    fn floor(&self) -> f64 {
+        roundoff_floor(self.prob.prec)
+    }
+
+    /// The relative error of the solution's scale from the contour integrals (every quantity
+    /// proportional to the coefficients carries it).
+    pub(crate) fn contour_scale_error(&self) -> f64 {
+        self.contour.scale_error()
+    }
+
+    /// The contour integrals' share of the error of a quantity proportional to the solution's
+    /// coefficients (their scale comes from the slope condition).
+    fn scaled_contour_error(&self, q: &T) -> f64 {
+        self.contour.scale_error() * q.to_f64().abs()
     }
 
     /// [`Self::force_hat`] with its absolute error estimate (the rule of
@@ -767,7 +922,9 @@ impl<T: CachedRules> GenuineCase<T> {
     pub fn force_hat_with_error(&self) -> (T, f64) {
         let fine = self.force_hat();
         let err = self
-            .estimate_of(true, &fine, |f| Ok(self.force_of(f)))
+            .estimate_of(true, self.scaled_contour_error(&fine), &fine, |f| {
+                Ok(self.force_of(f))
+            })
             .unwrap_or(f64::INFINITY);
         (fine, err)
     }
@@ -790,7 +947,7 @@ impl<T: CachedRules> GenuineCase<T> {
         let amp = self.amplitude_from(&ex, &self.fit, &apex)?;
         // a coarser size whose amplitude cannot be computed leaves no estimate (infinite)
         let degrees = self
-            .estimate_of(false, &amp, |f| {
+            .estimate_of(false, self.scaled_contour_error(&amp), &amp, |f| {
                 self.amplitude_from(&ex, f, &self.apex_coefficients(f))
             })
             .unwrap_or(f64::INFINITY);
@@ -891,13 +1048,14 @@ impl<T: CachedRules> GenuineCase<T> {
         }
         let prob = &self.prob;
         let samples = if x0 < prob.p {
-            prob.contour_samples(&self.fit.basis, &x0, h)
+            prob.contour_samples(&self.fit.basis, &x0, h).0
         } else {
             // Outside the contact the v-integrand has no singularity at x0; the rule is split
             // at p/2, so that the edge singularity h ~ (p - v)^(-1/2 + Omega) keeps the
             // double-exponential end of the rule (a split at p would put the truncated
             // single-exponential end there and lose about delta^(1/2), 1e-10 in f64).
             prob.contour_samples(&self.fit.basis, &(prob.p.clone() / 2.0), h)
+                .0
         };
         let hw = prob.weighted_slopes(&self.fit.basis, &samples, &self.fit.coef);
         Ok(prob.contour(&samples, &hw, &x0, self.opts.contour_tol))

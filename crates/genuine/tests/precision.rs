@@ -290,3 +290,53 @@ fn inverse_at_96_bits_is_polished_from_f64() {
     let dp = (g.p().to_f64() - 0.3).abs();
     assert!(dp < 1e-12, "p = {} (off by {dp:e})", g.p().to_f64());
 }
+
+/// Next to the Rayleigh speed (p = 0.495, m_R = 0.4957; Theta 89 deg, gamma 0.6, coupled) the
+/// contour rule converges more slowly than exp(-pi^2/h): with the step of the factor 1 it
+/// leaves 3.7e-32 in V at 132 bits, common to every degree and invisible to the differences
+/// between degrees. The level-doubling probe of the contour rule must cover it. At the
+/// default step the convergence in the degree flattens between 3N/4 and N; every stated
+/// error (V, the force) must bound the error against a solve with every step halved and a
+/// larger degree.
+#[test]
+fn near_rayleigh_estimates_cover_the_contour_rule() {
+    let mat = Material::paper();
+    let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
+    let p = fl(0.495);
+    let opts = SolveOptions::for_precision(BITS);
+    let fine = SolveOptions {
+        degree: opts.degree + 16,
+        h_quad: opts.h_quad / 2.0,
+        h_tanh: opts.h_tanh / 2.0,
+        ..opts.clone()
+    };
+    let coarse_step = SolveOptions {
+        h_tanh: opts.h_tanh / 0.75,
+        ..opts.clone()
+    };
+    let reference = GenuineCase::solve(&mat, &ind, p.clone(), fine).unwrap();
+    let (f_ref, _) = reference.force_hat_with_error();
+    for (label, o) in [("default", opts), ("step / 0.75", coarse_step)] {
+        let g = GenuineCase::solve(&mat, &ind, p.clone(), o).unwrap();
+        let dv = Float::with_val(BITS, g.v_hat() - reference.v_hat())
+            .abs()
+            .to_f64();
+        let (f, f_est) = g.force_hat_with_error();
+        let df = Float::with_val(BITS, f - &f_ref).abs().to_f64();
+        let v_est = g.error_estimate();
+        println!(
+            "{label}: V error {dv:.2e} stated {v_est:.2e}; force error {df:.2e} stated {f_est:.2e}; probe {:?}",
+            g.contour_probe()
+        );
+        assert!(dv <= v_est, "{label}: V error {dv:e} > stated {v_est:e}");
+        assert!(df <= f_est, "{label}: force error {df:e} > stated {f_est:e}");
+        if label == "default" {
+            // and the default steps leave no more than the degrees' plateau there (about
+            // 1e-33; 1e-37 away from the Rayleigh speed)
+            assert!(v_est < 1e-32, "{label}: stated {v_est:e}");
+        } else {
+            // the probe sees the slower rule
+            assert!(v_est > 1e-33, "{label}: stated {v_est:e}");
+        }
+    }
+}
