@@ -307,7 +307,7 @@ impl ImpactCase {
                 Striker::Shell(_) => self.striker.compliance(m, dx, self.kappa)?,
                 _ => None,
             };
-            let mut march = March::new(
+            let march = March::new(
                 &mut tables,
                 own.as_mut().or(shared.as_mut()),
                 &self.profile,
@@ -320,6 +320,7 @@ impl ImpactCase {
             // the nearest step to the end time, never past the striker model's validity
             let valid = (self.striker.validity_end() / march.dt() + 1e-9).floor();
             let nsteps = (self.end / march.dt()).round().min(valid) as usize;
+            let mut march = march.with_horizon(nsteps);
             let weight = 0.25f64.powi(level as i32) / total;
             for n in 0..nsteps {
                 if !march.step()? {

@@ -13,6 +13,7 @@
 
 pub mod case;
 pub mod error;
+pub(crate) mod history;
 pub mod march;
 pub mod profile;
 pub mod striker;

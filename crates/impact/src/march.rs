@@ -7,6 +7,7 @@
 //! Units inside: c1 = 1, mu = 1, lengths in R (so rho = 1/m^2, m = c2/c1).
 
 use crate::error::{ImpactError, Result};
+use crate::history::HistorySum;
 use crate::profile::Profile;
 use crate::striker::Compliance;
 use crate::tables::{ShapeRules, Tables};
@@ -95,6 +96,9 @@ pub struct March<'a> {
     /// rigid striker); `None` when the local model does not apply (a striker of other wave
     /// speeds or a shell): the edge is then captured cell by cell.
     edge_gap_scale: Option<f64>,
+    /// The history sums of the half-plane's and the striker's displacements.
+    history: HistorySum,
+    striker_history: Option<HistorySum>,
 }
 
 fn solve_dense(mut a: Vec<f64>, mut r: Vec<f64>, n: usize) -> Option<Vec<f64>> {
@@ -313,10 +317,22 @@ impl<'a> March<'a> {
             dt: kappa * dx,
             kcap,
             edge_gap_scale: striker.is_none().then_some(1.0),
+            history: HistorySum::new(dx, None),
+            striker_history: striker.is_some().then(|| HistorySum::new(dx, None)),
             striker,
             steps: Vec::new(),
             separation: None,
         }
+    }
+
+    /// Limits the march to `steps` steps, so that the history sum accumulates nothing for
+    /// later steps (a step beyond is refused).
+    pub(crate) fn with_horizon(mut self, steps: usize) -> Self {
+        self.history.set_horizon(steps);
+        if let Some(h) = self.striker_history.as_mut() {
+            h.set_horizon(steps);
+        }
+        self
     }
 
     /// Sets the factor of the edge model's gap coefficient (`None`: no edge model).
@@ -339,44 +355,21 @@ impl<'a> March<'a> {
     }
 
     /// Displacements at t_n (n = steps.len() + 1) at x_0..x_imax due to all past steps: the
-    /// half-plane's and the striker's (empty for a rigid striker).
+    /// half-plane's and the striker's (empty for a rigid striker), from the fast history sums
+    /// (`crate::history`).
     fn history(&mut self, n: usize, imax: usize) -> Result<(Vec<f64>, Vec<f64>)> {
+        debug_assert_eq!(self.history.len() + 1, n);
         let kmax = self.steps.iter().map(|s| s.k).max().unwrap_or(0).max(imax);
-        self.tables.ensure(2 * kmax + 2, n)?;
+        // the current step's coefficients (lag 0)
+        self.tables.ensure(2 * kmax + 2, 0)?;
         if let Some(s) = self.striker.as_deref_mut() {
-            s.ensure(2 * kmax + 2, n)?;
+            s.ensure(2 * kmax + 2, 0)?;
         }
-        let add = |row: &[f64], scale: f64, p: &[f64], hist: &mut [f64]| {
-            for (j, &pj) in p.iter().enumerate() {
-                let pj = pj * scale;
-                if j == 0 {
-                    for (i, hv) in hist.iter_mut().enumerate() {
-                        *hv += row[i] * pj;
-                    }
-                } else {
-                    for (i, hv) in hist.iter_mut().enumerate() {
-                        *hv += (row[i.abs_diff(j)] + row[i + j]) * pj;
-                    }
-                }
-            }
+        let hist = self.history.at(&mut *self.tables, imax)?;
+        let hist_s = match (self.striker.as_deref_mut(), self.striker_history.as_mut()) {
+            (Some(s), Some(h)) => h.at(s, imax)?,
+            _ => Vec::new(),
         };
-        let mut hist = vec![0.0; imax + 1];
-        let mut hist_s = if self.striker.is_some() {
-            vec![0.0; imax + 1]
-        } else {
-            Vec::new()
-        };
-        for (mi, st) in self.steps.iter().enumerate() {
-            if st.pressure.is_empty() {
-                continue;
-            }
-            let l = n - (mi + 1);
-            add(self.tables.row(l), self.dx, &st.pressure, &mut hist);
-            if let Some(s) = self.striker.as_deref() {
-                let (row, scale) = s.row(l);
-                add(row, self.dx * scale, &st.pressure, &mut hist_s);
-            }
-        }
         Ok((hist, hist_s))
     }
 
@@ -585,6 +578,10 @@ impl<'a> March<'a> {
                 time: format!("{t:.6}"),
                 reason: "a non-finite penetration or force".into(),
             });
+        }
+        self.history.push(&mut *self.tables, &p)?;
+        if let (Some(s), Some(hs)) = (self.striker.as_deref_mut(), self.striker_history.as_mut()) {
+            hs.push(s, &p)?;
         }
         self.steps.push(StepState {
             t,

@@ -18,11 +18,11 @@
 //! Point collocation at the cell centres has them (a mode about 2.4 cells long grows by about
 //! 3 % a step for kappa = 2, whatever kappa; `docs/impact.md`, section 2).
 //!
-//! Xi is an integral of the closed-form Phi over X at fixed T; Phi is smooth in X except on
-//! the wave arrivals X = s_R T, c2 T, c1 T, so each unit interval is split there and each
-//! piece integrated by Gauss-Legendre with quadratic clustering at both ends (the arrivals
-//! are weak singularities of Phi: x log x at the Rayleigh ray, fractional powers at the
-//! fronts). The error of each piece is the difference of two rules.
+//! Xi is in closed form (`lamb::HalfPlane::cell_mean_primitive_zz`: Phi integrated by parts
+//! twice into the moments M_1, M_0 and M_{-1} of the impulse response), so a table value costs
+//! three moment evaluations and no quadrature crosses a wave arrival; the test module keeps
+//! the quadrature of Phi over X (split at the arrivals, clustered Gauss-Legendre) as the second
+//! route.
 //!
 //! Phi, hence Xi, is homogeneous (of degree 1, 2), so A = dx a(k, l) with a depending on kappa
 //! and the material only: one table serves every grid of the same kappa (the refinement
@@ -33,14 +33,11 @@ use lamb::HalfPlane;
 
 use crate::error::Result;
 
-/// Gauss-Legendre sizes of the two rules whose difference estimates a piece's error.
+/// Gauss-Legendre size of the rule for pieces clustered at their ends (the free edge's shape
+/// correction, `march`).
 const RULE_FINE: usize = 24;
-const RULE_COARSE: usize = 16;
-/// Gauss-Legendre sizes on pieces where Phi is analytic.
+/// Gauss-Legendre size of the rule for smooth pieces.
 const SMOOTH_FINE: usize = 7;
-const SMOOTH_COARSE: usize = 5;
-/// Largest relative difference of the two plain rules accepted on an analytic piece.
-const SMOOTH_TOL: f64 = 1e-13;
 
 /// Gauss-Legendre rules on [-1, 1] for pieces clustered at their ends and for smooth pieces.
 pub(crate) type ShapeRules<'r> = (&'r [(f64, f64)], &'r [(f64, f64)]);
@@ -51,17 +48,15 @@ pub struct Tables {
     half_plane: HalfPlane<f64>,
     /// xi[l][j] = Xi(j, l kappa) (dx = 1), j = 0, 1, ...
     xi: Vec<Vec<f64>>,
-    /// The accumulated error estimate of the last value of each row of `xi`.
+    /// The largest error estimate of a value of each row of `xi`.
     xi_err: Vec<f64>,
     /// a[l][k] for l = 0 .. xi.len() - 2.
     a: Vec<Vec<f64>>,
     /// Largest absolute error estimate of a coefficient so far.
     err: f64,
-    /// The two Gauss-Legendre rules on [-1, 1].
+    /// The Gauss-Legendre rules on [-1, 1] of the shape correction.
     fine: std::sync::Arc<Vec<(f64, f64)>>,
-    coarse: std::sync::Arc<Vec<(f64, f64)>>,
     smooth_fine: std::sync::Arc<Vec<(f64, f64)>>,
-    smooth_coarse: std::sync::Arc<Vec<(f64, f64)>>,
 }
 
 impl Tables {
@@ -75,10 +70,7 @@ impl Tables {
             a: Vec::new(),
             err: 0.0,
             fine: gauss_legendre_rule::<f64>(RULE_FINE, 53).map_err(lamb::LambError::from)?,
-            coarse: gauss_legendre_rule::<f64>(RULE_COARSE, 53).map_err(lamb::LambError::from)?,
             smooth_fine: gauss_legendre_rule::<f64>(SMOOTH_FINE, 53)
-                .map_err(lamb::LambError::from)?,
-            smooth_coarse: gauss_legendre_rule::<f64>(SMOOTH_COARSE, 53)
                 .map_err(lamb::LambError::from)?,
         })
     }
@@ -99,101 +91,11 @@ impl Tables {
         self.err
     }
 
-    /// Phi(x, t) (normal displacement, normal load) and its error estimate.
-    fn phi(&self, x: f64, t: f64) -> Result<(f64, f64)> {
-        let e = self.half_plane.space_time_primitive(1, &x, &t)?.zz;
+    /// Xi(X, T) (dx = 1) in closed form (`lamb::HalfPlane::cell_mean_primitive_zz`) and its
+    /// absolute error estimate.
+    fn xi_at(&self, x: f64, t: f64) -> Result<(f64, f64)> {
+        let e = self.half_plane.cell_mean_primitive_zz(&x, &t)?;
         Ok((e.value, e.err))
-    }
-
-    /// Int_a^b Phi(x, t) dx by two rules (sizes `RULE_FINE`, `RULE_COARSE`) after the
-    /// substitution x = end + (mid - end) u^2 from each end (quadratic clustering, for a
-    /// piece ending on a wave arrival or at X = 0), with the rules' difference as the error.
-    fn clustered(&self, a: f64, b: f64, t: f64) -> Result<(f64, f64)> {
-        let mid = 0.5 * (a + b);
-        let mut vals = [0.0; 2];
-        let mut round = 0.0;
-        for (r, rule) in [&self.fine, &self.coarse].into_iter().enumerate() {
-            let mut s = 0.0;
-            for (end, dir) in [(a, mid - a), (b, mid - b)] {
-                for (u, w) in rule.iter() {
-                    let u = 0.5 * (u + 1.0);
-                    let (v, e) = self.phi(end + dir * u * u, t)?;
-                    // dx = 2 dir u du, du = dU/2 on [-1, 1]
-                    let jac = w * dir.abs() * u;
-                    s += v * jac;
-                    if r == 0 {
-                        round += e * jac;
-                    }
-                }
-            }
-            vals[r] = s;
-        }
-        Ok((vals[0], (vals[0] - vals[1]).abs() + round))
-    }
-
-    /// Int_a^b Phi(x, t) dx for a piece with no wave arrival inside, with its error estimate.
-    /// Beyond the P front (a >= t) Phi does not depend on X; a piece away from the arrivals
-    /// and from X = 0 takes the plain rules (Phi is analytic there), unless their difference
-    /// exceeds `SMOOTH_TOL` relative to the piece, when the clustered rules are used.
-    fn piece(&self, a: f64, b: f64, t: f64) -> Result<(f64, f64)> {
-        if a >= t {
-            let (v, e) = self.phi(a, t)?;
-            return Ok((v * (b - a), e * (b - a)));
-        }
-        let hp = &self.half_plane;
-        let arrivals = [0.0, *hp.s_r() * t, *hp.m() * t, t];
-        let near = |x: f64| {
-            arrivals
-                .iter()
-                .any(|&q| (x - q).abs() <= 1e-12 * t.max(1.0))
-        };
-        if !near(a) && !near(b) {
-            let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
-            let mut vals = [0.0; 2];
-            let mut round = 0.0;
-            for (r, rule) in [&self.smooth_fine, &self.smooth_coarse]
-                .into_iter()
-                .enumerate()
-            {
-                let mut s = 0.0;
-                for (u, w) in rule.iter() {
-                    let (v, e) = self.phi(mid + half * u, t)?;
-                    s += v * w * half;
-                    if r == 0 {
-                        round += e * w * half;
-                    }
-                }
-                vals[r] = s;
-            }
-            let err = (vals[0] - vals[1]).abs();
-            if err <= SMOOTH_TOL * vals[0].abs().max(round) {
-                return Ok((vals[0], err + round));
-            }
-        }
-        self.clustered(a, b, t)
-    }
-
-    /// Int_lo^hi Phi(x, t) dx, split at the wave arrivals s_R t, c2 t, c1 t.
-    fn interval(&self, lo: f64, hi: f64, t: f64) -> Result<(f64, f64)> {
-        let hp = &self.half_plane;
-        let mut pts = [lo, 0.0, 0.0, 0.0, hi];
-        let mut n = 1;
-        let mut arrivals = [*hp.s_r() * t, *hp.m() * t, t];
-        arrivals.sort_by(f64::total_cmp);
-        for b in arrivals {
-            if b > lo && b < hi {
-                pts[n] = b;
-                n += 1;
-            }
-        }
-        pts[n] = hi;
-        let (mut v, mut e) = (0.0, 0.0);
-        for w in pts[..=n].windows(2) {
-            let (pv, pe) = self.piece(w[0], w[1], t)?;
-            v += pv;
-            e += pe;
-        }
-        Ok((v, e))
     }
 
     /// Makes a(k, l) available for k <= kmax and l <= lmax.
@@ -210,23 +112,19 @@ impl Tables {
                 continue;
             }
             let t = l as f64 * self.kappa;
-            let mut row = std::mem::take(&mut self.xi[l]);
-            let mut cum = self.xi_err[l];
+            let mut worst = self.xi_err[l];
             for j in have..width {
-                let v = if l == 0 || j == 0 {
-                    0.0
+                let (v, e) = if l == 0 || j == 0 {
+                    (0.0, 0.0)
                 } else {
-                    let (v, e) = self.interval((j - 1) as f64, j as f64, t)?;
-                    // the error of Xi accumulates over the unit intervals; a coefficient
-                    // takes eight values of Xi
-                    cum += e;
-                    self.err = self.err.max(8.0 * cum);
-                    row[j - 1] + v
+                    self.xi_at(j as f64, t)?
                 };
-                row.push(v);
+                worst = worst.max(e);
+                self.xi[l].push(v);
             }
-            self.xi[l] = row;
-            self.xi_err[l] = cum;
+            // a coefficient takes eight values of Xi
+            self.err = self.err.max(8.0 * worst);
+            self.xi_err[l] = worst;
         }
         while self.a.len() < lmax + 1 {
             self.a.push(Vec::new());
@@ -260,6 +158,213 @@ impl Tables {
 mod tests {
     use super::*;
     use lamb::cells::{Cell, TimeShape};
+
+    type Rule = std::sync::Arc<Vec<(f64, f64)>>;
+
+    /// The second route to Xi: Gauss-Legendre quadrature of the closed-form Phi over each
+    /// unit interval, split at the wave arrivals, with quadratic clustering at the pieces'
+    /// ends (the arrivals are weak singularities of Phi: x log x at the Rayleigh ray,
+    /// fractional powers at the fronts), two rule sizes compared for the error.
+    struct Quadrature {
+        hp: HalfPlane<f64>,
+        clust: (Rule, Rule),
+        smooth: (Rule, Rule),
+    }
+
+    impl Quadrature {
+        fn new(hp: HalfPlane<f64>) -> Self {
+            let r = |n| gauss_legendre_rule::<f64>(n, 53).unwrap();
+            Quadrature {
+                hp,
+                clust: (r(24), r(16)),
+                smooth: (r(7), r(5)),
+            }
+        }
+
+        /// Xi(j, t) (dx = 1) as the sum over the unit intervals, with its error estimate.
+        fn xi(&self, j: usize, t: f64) -> (f64, f64) {
+            let (mut v, mut e) = (0.0, 0.0);
+            for q in 0..j {
+                let (a, b) = self.interval(q as f64, (q + 1) as f64, t).unwrap();
+                v += a;
+                e += b;
+            }
+            (v, e)
+        }
+
+        /// Phi(x, t) (normal displacement, normal load) and its error estimate.
+        fn phi(&self, x: f64, t: f64) -> Result<(f64, f64)> {
+            let e = self.hp.space_time_primitive(1, &x, &t)?.zz;
+            Ok((e.value, e.err))
+        }
+
+        /// Int_a^b Phi(x, t) dx by two rules (sizes `RULE_FINE`, `RULE_COARSE`) after the
+        /// substitution x = end + (mid - end) u^2 from each end (quadratic clustering, for a
+        /// piece ending on a wave arrival or at X = 0), with the rules' difference as the error.
+        fn clustered(&self, a: f64, b: f64, t: f64) -> Result<(f64, f64)> {
+            let mid = 0.5 * (a + b);
+            let mut vals = [0.0; 2];
+            let mut round = 0.0;
+            for (r, rule) in [&*self.clust.0, &*self.clust.1].into_iter().enumerate() {
+                let mut s = 0.0;
+                for (end, dir) in [(a, mid - a), (b, mid - b)] {
+                    for (u, w) in rule.iter() {
+                        let u = 0.5 * (u + 1.0);
+                        let (v, e) = self.phi(end + dir * u * u, t)?;
+                        // dx = 2 dir u du, du = dU/2 on [-1, 1]
+                        let jac = w * dir.abs() * u;
+                        s += v * jac;
+                        if r == 0 {
+                            round += e * jac;
+                        }
+                    }
+                }
+                vals[r] = s;
+            }
+            Ok((vals[0], (vals[0] - vals[1]).abs() + round))
+        }
+
+        /// Int_a^b Phi(x, t) dx for a piece with no wave arrival inside, with its error estimate.
+        /// Beyond the P front (a >= t) Phi does not depend on X; a piece away from the arrivals
+        /// and from X = 0 takes the plain rules (Phi is analytic there), unless their difference
+        /// exceeds `SMOOTH_TOL` relative to the piece, when the clustered rules are used.
+        fn piece(&self, a: f64, b: f64, t: f64) -> Result<(f64, f64)> {
+            if a >= t {
+                let (v, e) = self.phi(a, t)?;
+                return Ok((v * (b - a), e * (b - a)));
+            }
+            let hp = &self.hp;
+            let arrivals = [0.0, *hp.s_r() * t, *hp.m() * t, t];
+            let near = |x: f64| {
+                arrivals
+                    .iter()
+                    .any(|&q| (x - q).abs() <= 1e-12 * t.max(1.0))
+            };
+            if !near(a) && !near(b) {
+                let (half, mid) = (0.5 * (b - a), 0.5 * (a + b));
+                let mut vals = [0.0; 2];
+                let mut round = 0.0;
+                for (r, rule) in [&*self.smooth.0, &*self.smooth.1].into_iter().enumerate() {
+                    let mut s = 0.0;
+                    for (u, w) in rule.iter() {
+                        let (v, e) = self.phi(mid + half * u, t)?;
+                        s += v * w * half;
+                        if r == 0 {
+                            round += e * w * half;
+                        }
+                    }
+                    vals[r] = s;
+                }
+                let err = (vals[0] - vals[1]).abs();
+                if err <= 1e-13 * vals[0].abs().max(round) {
+                    return Ok((vals[0], err + round));
+                }
+            }
+            self.clustered(a, b, t)
+        }
+
+        /// Int_lo^hi Phi(x, t) dx, split at the wave arrivals s_R t, c2 t, c1 t.
+        fn interval(&self, lo: f64, hi: f64, t: f64) -> Result<(f64, f64)> {
+            let hp = &self.hp;
+            let mut pts = [lo, 0.0, 0.0, 0.0, hi];
+            let mut n = 1;
+            let mut arrivals = [*hp.s_r() * t, *hp.m() * t, t];
+            arrivals.sort_by(f64::total_cmp);
+            for b in arrivals {
+                if b > lo && b < hi {
+                    pts[n] = b;
+                    n += 1;
+                }
+            }
+            pts[n] = hi;
+            let (mut v, mut e) = (0.0, 0.0);
+            for w in pts[..=n].windows(2) {
+                let (pv, pe) = self.piece(w[0], w[1], t)?;
+                v += pv;
+                e += pe;
+            }
+            Ok((v, e))
+        }
+    }
+
+    /// The closed-form Xi against the quadrature of Phi over X, at every region of s =
+    /// X/T (ahead of P, between the fronts, around the Rayleigh ray, late times), for three
+    /// materials (nu = 0.25, 0.3 and 0.45, where s_R nears c2).
+    #[test]
+    fn closed_form_xi_is_the_quadrature_of_phi() {
+        for nu in [0.25, 0.3, 0.45] {
+            let hp = HalfPlane::from_poisson(nu).unwrap();
+            let quad = Quadrature::new(hp.clone());
+            let mut worst: f64 = 0.0;
+            for t in [0.5, 1.0, 2.0, 3.7, 6.0, 25.0, 200.0, 2000.0] {
+                for j in [1usize, 2, 3, 5, 8, 13, 40] {
+                    let (want, qerr) = quad.xi(j, t);
+                    let got = hp.cell_mean_primitive_zz(&(j as f64), &t).unwrap();
+                    let diff = (got.value - want).abs();
+                    let scale = want.abs().max(1e-300);
+                    worst = worst.max(diff / scale);
+                    assert!(
+                        diff <= 10.0 * (qerr + got.err) + 1e-13 * scale,
+                        "nu {nu}, Xi({j}, {t}) = {} closed form, {want} by quadrature (errors {:e}, {qerr:e})",
+                        got.value,
+                        got.err
+                    );
+                    assert!(
+                        got.err <= 1e-11 * scale,
+                        "nu {nu}, Xi({j}, {t}): stated {:e} of {scale:e}",
+                        got.err
+                    );
+                }
+            }
+            println!("nu {nu}: largest relative difference {worst:e}");
+        }
+    }
+
+    /// The coefficients a(k, l) from the closed-form Xi against those from the quadrature of
+    /// Phi, over 40 cells and 600 steps at kappa = 2 (lags to c1 t = 1200 dx, where the
+    /// second differences cancel most): within the stated errors of both routes.
+    #[test]
+    fn coefficients_from_the_closed_form_equal_those_from_quadrature() {
+        let (kappa, kmax, lmax) = (2.0, 40usize, 600usize);
+        let t = tables(kappa, kmax, lmax);
+        let quad = Quadrature::new(t.half_plane().clone());
+        let mut worst: f64 = 0.0;
+        for l in [0usize, 1, 2, 5, 17, 60, 200, 599] {
+            let xi = |ll: usize| -> Vec<(f64, f64)> {
+                (0..=kmax + 1)
+                    .map(|j| quad.xi(j, ll as f64 * kappa))
+                    .collect()
+            };
+            let (lo, hi) = (xi(l), xi(l + 1));
+            for k in [0usize, 1, 3, 10, 25, 40] {
+                let d2 = |row: &[(f64, f64)]| -> (f64, f64) {
+                    let left = if k == 0 { row[1] } else { row[k - 1] };
+                    (
+                        row[k + 1].0 - 2.0 * row[k].0 + left.0,
+                        row[k + 1].1 + 2.0 * row[k].1 + left.1,
+                    )
+                };
+                let ((a1, e1), (a0, e0)) = (d2(&hi), d2(&lo));
+                let want = a1 - a0;
+                let got = t.row(l)[k];
+                let d = (got - want).abs();
+                assert!(
+                    d <= 2.0 * (e1 + e0 + t.error()),
+                    "a({k}, {l}) = {got} closed form, {want} quadrature ({d:e}; errors {:e}, {:e})",
+                    e1 + e0,
+                    t.error()
+                );
+                if want.abs() > 1e-12 {
+                    worst = worst.max(d / want.abs());
+                }
+            }
+        }
+        println!(
+            "largest relative difference {worst:e}, stated table error {:e}",
+            t.error()
+        );
+        assert!(t.error() < 1e-9, "table error {:e}", t.error());
+    }
 
     fn tables(kappa: f64, kmax: usize, lmax: usize) -> Tables {
         let hp = HalfPlane::from_poisson(0.3).unwrap();

@@ -41,12 +41,18 @@ use crate::rational::{EvenRational, Factor, Rational};
 #[derive(Clone, Debug)]
 pub struct MomentCache<T> {
     by_n: [OnceLock<MomentTerms<T>>; 3],
+    /// The v- and w-parts of the first moment of g_zz (order n = -1).
+    first_zz: OnceLock<(EvenRational<T>, EvenRational<T>)>,
+    /// M_{-1}^zz(0) = Int_0^1 sigma g_zz dsigma.
+    pub(crate) first_zz_total: OnceLock<Estimate<T>>,
 }
 
 impl<T> Default for MomentCache<T> {
     fn default() -> Self {
         MomentCache {
             by_n: [OnceLock::new(), OnceLock::new(), OnceLock::new()],
+            first_zz: OnceLock::new(),
+            first_zz_total: OnceLock::new(),
         }
     }
 }
@@ -176,6 +182,37 @@ impl<T: CachedRules> HalfPlane<T> {
             )
         }));
         Rational { num, factors }.head()
+    }
+
+    /// The first moment's form (order n = -1): -mu Int_0^r u P(x)/c(x) dr', x = (1 - u)/lambda,
+    /// mu = 1 for the v-terms (lambda = m^2) and m^2 for the w-terms (lambda = 1): with
+    /// sigma^2 = m^2 x, d sigma = -mu r dr/sigma and the factor sigma^-(n + 1) = 1.
+    fn first_moment_form(&self, p: &[T], lambda: &T, mu: &T) -> EvenRational<T> {
+        let inv = lambda.clone().recip();
+        let px = compose_affine(p, &inv, &(-inv.clone()));
+        let mut num = vec![lambda.zero()];
+        num.extend(px.into_iter().map(|c| -(c * mu)));
+        let factors = self.cubic_factors(|x| {
+            (
+                Cx::real(-inv.clone()),
+                (-(x.clone().scale(lambda)))
+                    .add_re(&lambda.one())
+                    .scale(&inv),
+            )
+        });
+        Rational { num, factors }.head()
+    }
+
+    /// The v- and w-parts of the first moment of g_zz at this precision.
+    fn first_zz_rationals(&self) -> (EvenRational<T>, EvenRational<T>) {
+        let one = self.m.one();
+        let four = one.lit(4.0);
+        let k2 = vec![four.clone(), -four.clone(), one.clone()];
+        let p_zz_w = vec![four, -(self.m2.clone() * 4.0)];
+        (
+            self.first_moment_form(&k2, &self.m2, &one),
+            self.first_moment_form(&p_zz_w, &one, &self.m2),
+        )
     }
 
     /// -lambda^3 kappa Int_T^inf [sum_k p_k lambda^-k u^k y^(1 + n/2 - k + e)] /
@@ -445,11 +482,89 @@ impl<T: CachedRules> HalfPlane<T> {
         self.moments.by_n[n].get_or_init(|| self.build_moment(n))
     }
 
+    /// The first moment's partial fractions, from the guard copy and rounded once.
+    fn first_zz_terms(&self) -> &(EvenRational<T>, EvenRational<T>) {
+        self.moments.first_zz.get_or_init(|| match &self.guard {
+            Some(g) => {
+                let bits = self.m.prec();
+                let (a, b) = g.first_zz_rationals();
+                (a.round_to(bits), b.round_to(bits))
+            }
+            None => self.first_zz_rationals(),
+        })
+    }
+
+    /// The first moment of the normal response, M_{-1}^zz(s) = Int_s^inf sigma g_zz(sigma)
+    /// dsigma (principal value across s_R), with its absolute error estimate: the odd
+    /// substitution of the step response without its factor 1/sigma^2 (`docs/lamb.md`,
+    /// section 3), an even rational function of v (and w behind S) with no logarithm at
+    /// s = 0. It enters the cell means of the space-time cells
+    /// ([`HalfPlane::cell_mean_primitive_zz`]). Errors: s < 0 or not finite, s = s_R.
+    pub fn first_moment_zz(&self, s: &T) -> Result<Estimate<T>> {
+        self.first_moment_zz_with(s, true)
+    }
+
+    /// [`HalfPlane::first_moment_zz`] with or without the rounding of s_R (see
+    /// [`HalfPlane::moment_with`]).
+    pub(crate) fn first_moment_zz_with(&self, s: &T, rounding_of_s_r: bool) -> Result<Estimate<T>> {
+        self.check_s("s", s)?;
+        if *s == self.s_r {
+            return Err(self.at_rayleigh("the first moment M_-1(s)"));
+        }
+        if *s >= 1.0 {
+            return Ok(Estimate {
+                value: s.zero(),
+                err: 0.0,
+            });
+        }
+        let (tv, tw) = self.first_zz_terms();
+        let one = s.one();
+        let v = ((one.clone() - s) * (one.clone() + s)).sqrt();
+        let d2 = (s.clone() - &self.s_r) * (s.clone() + &self.s_r);
+        let v_r = (one.clone() - self.s_r.clone().sqr()).sqrt();
+        let gap = d2.clone() / (v_r + &v);
+        let mut out = tv.eval(&v, None, Some(&gap));
+        if *s < self.m {
+            let w = ((self.m.clone() - s) * (self.m.clone() + s)).sqrt() / &self.m;
+            let w_r = (one - &self.x_r).sqrt();
+            let gap = d2 * &self.a / (w_r + &w);
+            let b = tw.eval(&w, None, Some(&gap));
+            out.value += &b.value;
+            out.err += b.err;
+        }
+        // rounding of s_R moves the logarithm r s_R ln|s - s_R|
+        if rounding_of_s_r {
+            let eps = s.epsilon().to_f64();
+            let c = self.rayleigh_constants();
+            out.err += self.pole_conditioning(s) * eps * c.r_zz.to_f64().abs() * c.s_r.to_f64();
+        }
+        if !out.value.is_finite() {
+            return Err(invalid(
+                "s",
+                short(s.to_f64()),
+                "a point where M_-1(s) is finite",
+            ));
+        }
+        Ok(out)
+    }
+
     /// M_n(s) = Int_s^inf g(sigma) sigma^-n dsigma for n = 0, 1, 2 (module docs), each
     /// component with its absolute error estimate. Errors: s < 0 or not finite, s = s_R
     /// (logarithmic singularity of the direct terms, the delta of the cross term), s = 0 for
     /// n >= 1 (M_1 grows like (1 - nu) ln(1/s), M_2 like 1/s), n > 2.
     pub fn moment(&self, n: usize, s: &T) -> Result<Triple<Estimate<T>>> {
+        self.moment_with(n, s, true)
+    }
+
+    /// [`HalfPlane::moment`], with (`rounding_of_s_r`) or without the error that the rounding
+    /// of s_R causes in the logarithm at the Rayleigh arrival (a combination of moments in
+    /// which the logarithms cancel accounts for it itself).
+    pub(crate) fn moment_with(
+        &self,
+        n: usize,
+        s: &T,
+        rounding_of_s_r: bool,
+    ) -> Result<Triple<Estimate<T>>> {
         if n > 2 {
             return Err(invalid("moment order n", n, "0, 1 or 2"));
         }
@@ -532,7 +647,7 @@ impl<T: CachedRules> HalfPlane<T> {
         let mut xz = self.xz_moment(t, n, s);
         // rounding of s_R: the logarithm r s_R^-n ln|s - s_R| of the direct terms moves by
         // r s_R^-n (d s_R)/|s - s_R|; the cross term's delta changes side within an ulp of s_R
-        if *s < 1.0 {
+        if rounding_of_s_r && *s < 1.0 {
             let eps = s.epsilon().to_f64();
             let c = self.rayleigh_constants();
             let srn = c.s_r.to_f64().powi(-(n as i32));

@@ -391,3 +391,100 @@ fn no_non_finite_value_leaves_the_library() {
         }
     }
 }
+
+/// The first moment of g_zz (order n = -1, behind the cell means of the space-time cells)
+/// against plain quadrature of s g_zz(s) (principal value by symmetric pairing), in f64 for
+/// five materials and at 200 bits for three.
+#[test]
+fn first_moment_equals_quadrature_of_the_impulse_response() {
+    let m1 = |hp: &HalfPlane<f64>, s: f64| hp.first_moment_zz(&s).unwrap();
+    for nu in POISSON {
+        let hp = HalfPlane::from_poisson(nu).unwrap();
+        let (m, sr) = (*hp.m(), *hp.s_r());
+        for (sa, sb) in [
+            (0.0, 0.2),
+            (0.02, sr - 0.01),
+            (0.1, 0.95),
+            (sr + 1e-3, m),
+            (m, 1.0),
+            (0.5 * (m + 1.0), 1.2),
+            (sr - 1e-3, sr + 2e-3),
+            (0.0, 1.0),
+        ] {
+            let (a, b) = (m1(&hp, sa), m1(&hp, sb));
+            let got = a.value - b.value;
+            let want = moment_by_quadrature(&hp, 0, -1, &sa, &sb, 1e-15);
+            let d = (got - want).abs();
+            assert!(
+                d < 2e-13 * want.abs().max(1.0),
+                "nu {nu} [{sa}, {sb}]: {got} vs {want} ({d:e})"
+            );
+            assert!(a.err + b.err < 1e-11, "nu {nu}: err {:e}", a.err + b.err);
+        }
+        assert_eq!(m1(&hp, 1.5).value, 0.0);
+        assert!(hp.first_moment_zz(&sr).is_err());
+        assert!(hp.first_moment_zz(&-0.1).is_err());
+    }
+    let bits = 200;
+    for nu in [0.25, 0.45, 0.1] {
+        let like = fl(bits, 0.0);
+        let hp = HalfPlane::new(m_of(&like, nu)).unwrap();
+        let sr = hp.s_r().clone();
+        for (sa, sb) in [
+            (like.zero(), sr.clone() - 0.01),
+            (like.lit(0.1), like.lit(0.95)),
+            (hp.m().clone(), like.one()),
+        ] {
+            let a = hp.first_moment_zz(&sa).unwrap();
+            let b = hp.first_moment_zz(&sb).unwrap();
+            let want = moment_by_quadrature(&hp, 0, -1, &sa, &sb, 1e-50);
+            let d = (Float::with_val(bits, &a.value - &b.value) - &want)
+                .abs()
+                .to_f64();
+            assert!(d < 1e-45, "nu {nu}: {d:e}");
+            assert!(a.err + b.err < 1e-45, "nu {nu}: err {:e}", a.err + b.err);
+        }
+    }
+}
+
+/// The cell-mean primitive Xi(X, T) = Int_0^X Phi dX': its X-derivative is Phi (a centred
+/// difference), it is even in X, zero at X = 0 and for T <= 0, and a corner on the Rayleigh
+/// ray gives a finite value continuous with its neighbours.
+#[test]
+fn cell_mean_primitive_is_the_space_integral_of_phi() {
+    for nu in POISSON {
+        let hp = HalfPlane::from_poisson(nu).unwrap();
+        let sr = *hp.s_r();
+        let xi = |x: f64, t: f64| hp.cell_mean_primitive_zz(&x, &t).unwrap();
+        for (x, t) in [
+            (0.3, 1.0),
+            (0.8, 1.0),
+            (1.7, 1.0),
+            (2.0, 30.0),
+            (sr * 2.0 + 0.1, 2.0),
+        ] {
+            let h = 1e-4;
+            let d = (xi(x + h, t).value - xi(x - h, t).value) / (2.0 * h);
+            let phi = hp.space_time_primitive(1, &x, &t).unwrap().zz.value;
+            assert!(
+                (d - phi).abs() < 1e-7 * phi.abs().max(1.0),
+                "nu {nu} ({x}, {t}): dXi/dX {d}, Phi {phi}"
+            );
+            assert_eq!(xi(-x, t).value, xi(x, t).value);
+        }
+        assert_eq!(xi(0.0, 1.0).value, 0.0);
+        assert_eq!(xi(0.5, 0.0).value, 0.0);
+        assert_eq!(xi(0.5, -1.0).value, 0.0);
+        // on the Rayleigh ray
+        let on = xi(sr, 1.0);
+        let near = xi(sr * (1.0 + 1e-9), 1.0);
+        assert!(on.value.is_finite() && on.err < 1e-12);
+        assert!(
+            (on.value - near.value).abs() < 1e-8,
+            "{} vs {}",
+            on.value,
+            near.value
+        );
+        assert!(hp.cell_mean_primitive_zz(&f64::NAN, &1.0).is_err());
+    }
+}
