@@ -257,7 +257,14 @@ impl ContourProbe {
         Self::extrapolate(self.scale_diff, 1.0) + self.y_rel
     }
 
-    fn new<T: Real>(slope: &T, v_hat: &T, slope_2h: &T, v_hat_2h: &T, y_err: f64, beta: &T) -> Self {
+    fn new<T: Real>(
+        slope: &T,
+        v_hat: &T,
+        slope_2h: &T,
+        v_hat_2h: &T,
+        y_err: f64,
+        beta: &T,
+    ) -> Self {
         let s = slope.to_f64().abs();
         ContourProbe {
             v_diff: (v_hat.clone() - v_hat_2h).abs().to_f64(),

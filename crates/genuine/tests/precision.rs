@@ -329,7 +329,10 @@ fn near_rayleigh_estimates_cover_the_contour_rule() {
             g.contour_probe()
         );
         assert!(dv <= v_est, "{label}: V error {dv:e} > stated {v_est:e}");
-        assert!(df <= f_est, "{label}: force error {df:e} > stated {f_est:e}");
+        assert!(
+            df <= f_est,
+            "{label}: force error {df:e} > stated {f_est:e}"
+        );
         if label == "default" {
             // and the default steps leave no more than the degrees' plateau there (about
             // 1e-33; 1e-37 away from the Rayleigh speed)
