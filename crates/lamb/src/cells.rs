@@ -216,23 +216,14 @@ impl<T: CachedRules> HalfPlane<T> {
                 err: s.to_f64() * total0.err + total1.err / 2.0 + 4.0 * eps * mag,
             });
         }
+        // behind the Rayleigh arrival g_zz is analytic: its Taylor series, free of the
+        // cancellation of the differences of moments
+        if *s <= self.s_r.clone() / 2.0 {
+            return self.xi_zz_series(s);
+        }
         // the logarithms r s_R^-n ln|s - s_R| of the three moments cancel to
         // (r/(2 s_R)) (s - s_R)^2 ln|s - s_R|: the rounding of s_R moves xi by
         // r |s - s_R|/(2 s_R) d s_R only
-        if *s < self.s_r.clone() / 2.0 {
-            // behind the Rayleigh arrival g_zz is analytic (even in s, nearest singularity the
-            // pole at s_R): s [M_0(0) - M_0(s)] - [M_{-1}(0) - M_{-1}(s)]/2 = Int_0^s (s - sigma/2)
-            // g_zz(sigma) dsigma directly, free of the cancellation of the differences of
-            // moments (a loss of 1/s^2, 1e-11 at s = 1/200 in f64)
-            let m1 = self.moment(1, s)?.zz;
-            let head = self.head_integral_zz(s)?;
-            let a = s.clone().sqr() / 2.0 * &m1.value;
-            let mag = a.to_f64().abs() + head.value.to_f64().abs();
-            return Ok(Estimate {
-                err: 0.5 * s.to_f64().powi(2) * m1.err + head.err + 4.0 * eps * mag,
-                value: a + &head.value,
-            });
-        }
         let m1 = self.moment_with(1, s, false)?.zz;
         let m0 = self.moment_with(0, s, false)?.zz;
         let mm = self.first_moment_zz_with(s, false)?;
@@ -258,35 +249,78 @@ impl<T: CachedRules> HalfPlane<T> {
         Ok(Estimate { value, err })
     }
 
-    /// Int_0^s (s - sigma/2) g_zz(sigma) dsigma for 0 < s < s_R/2 by Gauss-Legendre (the
-    /// integrand is analytic on a Bernstein ellipse of parameter at least 3 + 8^(1/2) about
-    /// [0, s]), with the difference from a rule of three quarters the nodes as the error.
-    fn head_integral_zz(&self, s: &T) -> Result<Estimate<T>> {
-        let bits = s.prec();
-        // error rho^(-2n), rho >= 5.8: n = bits ln 2/(2 ln 5.8) + 4
-        let n = (f64::from(bits) * 0.197).ceil() as usize + 4;
-        let mut vals = Vec::with_capacity(2);
-        let mut mag = 0.0;
-        for size in [n, 3 * n / 4] {
-            let rule = complexfn::quadrature::gauss_legendre_rule::<T>(size, bits)?;
-            let half = s.clone() / 2.0;
-            let mut sum = s.zero();
-            for (u, w) in rule.iter() {
-                let sigma = half.clone() * (u.clone() + 1.0);
-                let g = self.impulse(&sigma)?.zz.value;
-                let term = (s.clone() - sigma / 2.0) * g * w;
-                mag += term.to_f64().abs();
-                sum += &term;
-            }
-            vals.push(sum * &half);
-        }
-        let diff = (vals[0].clone() - &vals[1]).abs().to_f64();
+    /// xi(s) for 0 < s <= s_R/2 from the Taylor series of g_zz in u = s^2
+    /// ([`HalfPlane::zz_series`]): with g_zz = sum_k g_k u^k,
+    ///
+    /// ```text
+    ///   M_1(s) = -g_0 ln s + C_1 - sum_{k>=1} g_k u^k/(2k),
+    ///   Int_0^s (s - sigma/2) g_zz dsigma = sum_k g_k u^(k+1) [1/(2k + 1) - 1/(4k + 4)],
+    ///   xi(s) = u [(C_1 - g_0 ln s)/2 + sum_k g_k e_k u^k],
+    ///   e_0 = 3/4,  e_k = 1/(2k + 1) - 1/(4k + 4) - 1/(4k) = -1/(4k(k + 1)(2k + 1)),
+    /// ```
+    ///
+    /// C_1 fixed once by the closed-form step response at s_R/2. No difference of moments
+    /// is formed (they would lose 1/s^2 to cancellation, 1e-11 at s = 1/200 in f64), and a
+    /// value costs one logarithm and a short polynomial.
+    fn xi_zz_series(&self, s: &T) -> Result<Estimate<T>> {
         let eps = s.epsilon().to_f64();
-        let value = vals.swap_remove(0);
+        let g = self.zz_series();
+        let c1 = match self.moments.step_constant.get() {
+            Some(c) => c.clone(),
+            None => {
+                let at = self.s_r.clone() / 2.0;
+                let w = self.moment(1, &at)?.zz;
+                let u = at.clone().sqr();
+                let mut sum = w.value.clone() + g[0].clone() * at.ln();
+                let mut mag = sum.to_f64().abs();
+                let mut uk = u.clone();
+                for (k, gk) in g.iter().enumerate().skip(1) {
+                    let t = gk.clone() * &uk / (2 * k) as f64;
+                    mag += t.to_f64().abs();
+                    sum += &t;
+                    uk *= &u;
+                }
+                let c = Estimate {
+                    err: w.err + 8.0 * eps * mag + self.series_tail(g, &u),
+                    value: sum,
+                };
+                self.moments.step_constant.get_or_init(|| c).clone()
+            }
+        };
+        let u = s.clone().sqr();
+        // Horner in u over sum_k g_k e_k u^k
+        let mut poly = s.zero();
+        let mut mag = 0.0;
+        for (k, gk) in g.iter().enumerate().rev() {
+            // e_k = 1/(2k + 1) - 1/(4k + 4) - 1/(4k) = -1/(4k(k + 1)(2k + 1)), e_0 = 3/4:
+            // exact integers, divided in T
+            let kf = k as f64;
+            let (num, den) = if k == 0 {
+                (3.0, 4.0)
+            } else {
+                (-1.0, 4.0 * kf * (kf + 1.0) * (2.0 * kf + 1.0))
+            };
+            let term = gk.clone() * num / den;
+            mag = mag * u.to_f64() + term.to_f64().abs();
+            poly = poly * &u + &term;
+        }
+        let log = (c1.value.clone() - g[0].clone() * s.clone().ln()) / 2.0;
+        let inner = log.clone() + &poly;
+        let uf = u.to_f64();
+        let err =
+            uf * (c1.err / 2.0 + 8.0 * eps * (log.to_f64().abs() + mag) + self.series_tail(g, &u));
         Ok(Estimate {
-            err: diff + 8.0 * eps * mag * s.to_f64(),
-            value,
+            value: inner * &u,
+            err,
         })
+    }
+
+    /// A bound of the truncation of the Taylor series of g_zz at u (<= s_R^2/4): the last
+    /// term kept, times the geometric factor of terms falling at least like 4^-k, times 2.
+    fn series_tail(&self, g: &[T], u: &T) -> f64 {
+        let last = g.len() - 1;
+        let t = g[last].to_f64().abs() * u.to_f64().powi(last as i32);
+        4.0 * t
     }
 
     /// The displacement at (x, t) due to a unit load on `cell` with the given time shape

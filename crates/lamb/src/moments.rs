@@ -45,6 +45,10 @@ pub struct MomentCache<T> {
     first_zz: OnceLock<(EvenRational<T>, EvenRational<T>)>,
     /// M_{-1}^zz(0) = Int_0^1 sigma g_zz dsigma.
     pub(crate) first_zz_total: OnceLock<Estimate<T>>,
+    /// The Taylor coefficients of g_zz in u = s^2 behind the Rayleigh arrival.
+    pub(crate) zz_series: OnceLock<Vec<T>>,
+    /// C_1 = lim_{s -> 0} (W_zz(s) + g_zz(0) ln s), the constant of the step response.
+    pub(crate) step_constant: OnceLock<Estimate<T>>,
 }
 
 impl<T> Default for MomentCache<T> {
@@ -53,6 +57,8 @@ impl<T> Default for MomentCache<T> {
             by_n: [OnceLock::new(), OnceLock::new(), OnceLock::new()],
             first_zz: OnceLock::new(),
             first_zz_total: OnceLock::new(),
+            zz_series: OnceLock::new(),
+            step_constant: OnceLock::new(),
         }
     }
 }
@@ -480,6 +486,91 @@ impl<T: CachedRules> HalfPlane<T> {
 
     fn terms(&self, n: usize) -> &MomentTerms<T> {
         self.moments.by_n[n].get_or_init(|| self.build_moment(n))
+    }
+
+    /// The Taylor coefficients g_k of g_zz(s) = sum_k g_k u^k, u = s^2, at this precision
+    /// (`terms` of them): behind the S arrival g_zz = -(K^2 + 4 v w) v/c(x) with x = u/m^2,
+    /// K = 2 - x, v = (1 - u)^(1/2), w = (1 - x)^(1/2), all power series in u; the division by
+    /// the cubic c(x) is the recurrence of its coefficients. The series converges for
+    /// u < s_R^2 (the Rayleigh pole is the nearest singularity), its terms falling like
+    /// (u/s_R^2)^k.
+    fn zz_series_at(&self, terms: usize) -> Vec<T> {
+        let one = self.m.one();
+        let a = self.a.clone(); // 1/m^2
+                                // sqrt(1 - u) and sqrt(1 - a u)
+        let mut v = vec![one.clone()];
+        for k in 1..terms {
+            // (k - 3/2)/k, formed in T from exact integers
+            let c = v[k - 1].clone() * (2.0 * k as f64 - 3.0) / (2.0 * k as f64);
+            v.push(c);
+        }
+        let mut w = Vec::with_capacity(terms);
+        let mut ak = one.clone();
+        for c in &v {
+            w.push(c.clone() * &ak);
+            ak *= &a;
+        }
+        let mul = |p: &[T], q: &[T]| -> Vec<T> {
+            (0..terms)
+                .map(|k| {
+                    let mut acc = one.zero();
+                    for i in 0..=k.min(p.len() - 1) {
+                        if k - i < q.len() {
+                            acc += p[i].clone() * &q[k - i];
+                        }
+                    }
+                    acc
+                })
+                .collect()
+        };
+        // K^2 + 4 v w = 4 - 4 a u + a^2 u^2 + 4 v w
+        let mut num = mul(&v, &w);
+        for c in num.iter_mut() {
+            *c *= 4.0;
+        }
+        num[0] += one.lit(4.0);
+        if terms > 1 {
+            num[1] -= a.clone() * 4.0;
+        }
+        if terms > 2 {
+            num[2] += a.clone().sqr();
+        }
+        let num = mul(&num, &v);
+        // c(x) = x^3 - 8 x^2 + (24 - 16 m^2) x - 16 (1 - m^2), x = a u
+        let cpoly = [
+            -((one.clone() - &self.m2) * 16.0),
+            (one.lit(24.0) - self.m2.clone() * 16.0) * &a,
+            -(a.clone().sqr() * 8.0),
+            a.clone().sqr() * &a,
+        ];
+        let mut g: Vec<T> = Vec::with_capacity(terms);
+        for k in 0..terms {
+            // sum_i c_i g_{k-i} = -num_k
+            let mut acc = -num[k].clone();
+            for i in 1..cpoly.len().min(k + 1) {
+                acc -= cpoly[i].clone() * &g[k - i];
+            }
+            g.push(acc / &cpoly[0]);
+        }
+        g
+    }
+
+    /// The Taylor coefficients of g_zz in u = s^2 (see [`HalfPlane::zz_series_at`]), formed
+    /// on the guard copy and rounded once; enough terms for s <= s_R/2 at this precision.
+    pub(crate) fn zz_series(&self) -> &[T] {
+        self.moments.zz_series.get_or_init(|| {
+            let bits = self.m.prec();
+            // terms fall like 4^-k at s = s_R/2
+            let terms = (f64::from(bits) / 2.0).ceil() as usize + 8;
+            match &self.guard {
+                Some(g) => g
+                    .zz_series_at(terms)
+                    .iter()
+                    .map(|c| T::from_mpfr(c, bits))
+                    .collect(),
+                None => self.zz_series_at(terms),
+            }
+        })
     }
 
     /// The first moment's partial fractions, from the guard copy and rounded once.

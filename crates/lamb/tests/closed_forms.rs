@@ -488,3 +488,65 @@ fn cell_mean_primitive_is_the_space_integral_of_phi() {
         assert!(hp.cell_mean_primitive_zz(&f64::NAN, &1.0).is_err());
     }
 }
+
+/// Behind s_R/2 the cell-mean primitive comes from the Taylor series of g_zz; it must equal
+/// the combination of moments xi = (s^2/2) M_1 + s [M_0(0) - M_0(s)] - [M_-1(0) - M_-1(s)]/2
+/// formed at 200 bits (where their cancellation costs nothing), in f64 and at 200 bits, on
+/// both sides of the switch at s_R/2.
+#[test]
+fn cell_mean_series_equals_the_moments_at_200_bits() {
+    let bits = 200;
+    for nu in POISSON {
+        let like = fl(bits, 0.0);
+        let hp = HalfPlane::new(m_of(&like, nu)).unwrap();
+        let hp64 = HalfPlane::from_poisson(nu).unwrap();
+        let sr = hp.s_r().to_f64();
+        let xi_moments = |s: &Float| -> Float {
+            let total0 = hp.moment(0, &like.zero()).unwrap().zz.value;
+            let total1 = hp.first_moment_zz(&like.zero()).unwrap().value;
+            let m1 = hp.moment(1, s).unwrap().zz.value;
+            let m0 = hp.moment(0, s).unwrap().zz.value;
+            let mm = hp.first_moment_zz(s).unwrap().value;
+            let s2 = Float::with_val(bits, s * s);
+            let a = Float::with_val(bits, &s2 * &m1) / 2u32;
+            let b = Float::with_val(bits, s * Float::with_val(bits, &total0 - &m0));
+            let c = Float::with_val(bits, &total1 - &mm) / 2u32;
+            a + b - c
+        };
+        for s in [
+            1e-4,
+            1e-3,
+            0.01,
+            0.05,
+            0.5 * sr * 0.999,
+            0.5 * sr * 1.001,
+            0.8 * sr,
+        ] {
+            let sf = fl(bits, s);
+            // Xi(s, 1) = xi(s)/pi
+            let want = xi_moments(&sf) / Float::with_val(bits, rug::float::Constant::Pi);
+            let got = hp.cell_mean_primitive_zz(&sf, &like.one()).unwrap();
+            let d = (Float::with_val(bits, &got.value - &want)).abs().to_f64();
+            let w = want.to_f64().abs();
+            assert!(d < 1e-50 * w, "nu {nu}, s {s}: 200 bits off by {:e}", d / w);
+            assert!(
+                got.err < 1e-50 * w && got.err >= 0.0,
+                "nu {nu}, s {s}: err {:e}",
+                got.err
+            );
+            let g64 = hp64.cell_mean_primitive_zz(&s, &1.0).unwrap();
+            let d64 = (g64.value - want.to_f64()).abs();
+            assert!(
+                d64 <= g64.err,
+                "nu {nu}, s {s}: f64 off by {d64:e}, stated {:e}",
+                g64.err
+            );
+            let tol = if s < 0.5 * sr { 1e-13 } else { 1e-12 };
+            assert!(
+                g64.err < tol * w,
+                "nu {nu}, s {s}: f64 stated {:e}",
+                g64.err / w
+            );
+        }
+    }
+}
