@@ -37,7 +37,7 @@ use crate::striker::Compliance;
 use crate::tables::Tables;
 
 /// Squares with fewer steps than this are summed directly.
-const DIRECT_BELOW: usize = 16;
+const DIRECT_BELOW: usize = 8;
 
 /// Smallest width (cells) of the space dimension.
 const MIN_WIDTH: usize = 8;

@@ -101,7 +101,9 @@ pub struct March<'a> {
     striker_history: Option<HistorySum>,
 }
 
-fn solve_dense(mut a: Vec<f64>, mut r: Vec<f64>, n: usize) -> Option<Vec<f64>> {
+/// Solves a x = r for each right-hand side r of `rhs` (a row-major n x n), by Gaussian
+/// elimination with partial pivoting; `None` when a pivot vanishes or a result is not finite.
+fn solve_dense(mut a: Vec<f64>, mut rhs: Vec<Vec<f64>>, n: usize) -> Option<Vec<Vec<f64>>> {
     for c in 0..n {
         let mut piv = c;
         for i in c + 1..n {
@@ -116,7 +118,9 @@ fn solve_dense(mut a: Vec<f64>, mut r: Vec<f64>, n: usize) -> Option<Vec<f64>> {
             for j in 0..n {
                 a.swap(c * n + j, piv * n + j);
             }
-            r.swap(c, piv);
+            for r in rhs.iter_mut() {
+                r.swap(c, piv);
+            }
         }
         let d = a[c * n + c];
         for i in c + 1..n {
@@ -125,19 +129,38 @@ fn solve_dense(mut a: Vec<f64>, mut r: Vec<f64>, n: usize) -> Option<Vec<f64>> {
                 for j in c..n {
                     a[i * n + j] -= f * a[c * n + j];
                 }
-                r[i] -= f * r[c];
+                for r in rhs.iter_mut() {
+                    r[i] -= f * r[c];
+                }
             }
         }
     }
-    let mut x = vec![0.0; n];
-    for i in (0..n).rev() {
-        let mut s = r[i];
-        for j in i + 1..n {
-            s -= a[i * n + j] * x[j];
+    let mut out = Vec::with_capacity(rhs.len());
+    for r in rhs {
+        let mut x = vec![0.0; n];
+        for i in (0..n).rev() {
+            let mut s = r[i];
+            for j in i + 1..n {
+                s -= a[i * n + j] * x[j];
+            }
+            x[i] = s / a[i * n + i];
         }
-        x[i] = s / a[i * n + i];
+        if !x.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        out.push(x);
     }
-    x.iter().all(|v| v.is_finite()).then_some(x)
+    Some(out)
+}
+
+/// The two solutions behind every tied solve of one step and edge cell c: y = M^-1 r and
+/// z = M^-1 u, M the system of the cells 0..c - 1 (with the striker's coupling), r the
+/// right-hand side and u the edge cell's column. The tied system M + ratio u e^T (e the last
+/// cell) then has the solution y - ratio z (e.y)/(1 + ratio e.z) (Sherman-Morrison), so the
+/// iterations on the edge's position cost O(c) each instead of a factorisation.
+struct TiedBasis {
+    y: Vec<f64>,
+    z: Vec<f64>,
 }
 
 /// The local model of the edge cell (`docs/impact.md`, section 4): inside the contact the
@@ -199,6 +222,22 @@ impl StepData {
     }
 }
 
+/// d^e for d >= 0: through the square root and integer powers when 2e is a small integer (the
+/// exponents +-1/2 of the edge laws below c2 and their primitives), `powf` otherwise.
+fn pow(d: f64, e: f64) -> f64 {
+    let twice = 2.0 * e;
+    if twice == twice.round() && twice.abs() <= 16.0 {
+        let n = twice as i32;
+        if n % 2 == 0 {
+            d.powi(n / 2)
+        } else {
+            d.sqrt() * d.powi((n - 1) / 2)
+        }
+    } else {
+        d.powf(e)
+    }
+}
+
 /// Fraction of the Rayleigh speed below which a free (Signorini) edge is placed inside its
 /// cell by the local model; faster free edges are captured cell by cell.
 const FREE_EDGE_SPEED: f64 = 0.8;
@@ -207,7 +246,7 @@ impl EdgeModel {
     /// (1/dx) Int_lo^hi d^lambda dd (0 <= lo <= hi).
     fn mean_power(&self, lo: f64, hi: f64, dx: f64) -> f64 {
         let e = self.lambda + 1.0;
-        (hi.powf(e) - lo.powf(e)) / (e * dx)
+        (pow(hi, e) - pow(lo, e)) / (e * dx)
     }
 
     /// For the edge b in cell c (theta = (b - x_c + dx/2)/dx in [0, 1]): the ratio of the
@@ -221,10 +260,10 @@ impl EdgeModel {
         let neighbour = self.mean_power(inside, inside + dx, dx);
         let load = self.mean_power(0.0, inside, dx);
         let e = self.lambda + 2.0;
-        let mut gap = self.gap * outside.powf(e) / (e * dx);
+        let mut gap = self.gap * pow(outside, e) / (e * dx);
         if let Some(rules) = shape {
             gap -= self.static_factor
-                * dx.powf(self.lambda + 1.0)
+                * pow(dx, self.lambda + 1.0)
                 * self.shape_defect(theta, c, rules);
         }
         (load / neighbour, gap / neighbour)
@@ -242,10 +281,10 @@ impl EdgeModel {
         let f = |u: f64| if u == 0.0 { 0.0 } else { u * u.abs().ln() - u };
         // minus the mean over the edge cell of ln|d - xi|
         let kbar = |xi: f64| f(theta - 1.0 - xi) - f(theta - xi);
-        let power = |d: f64| if d > 0.0 { d.powf(lam) } else { 0.0 };
+        let power = |d: f64| if d > 0.0 { pow(d, lam) } else { 0.0 };
         let prim = |d: f64| {
             if d > 0.0 {
-                d.powf(lam + 1.0) / (lam + 1.0)
+                pow(d, lam + 1.0) / (lam + 1.0)
             } else {
                 0.0
             }
@@ -671,21 +710,58 @@ impl<'a> March<'a> {
     /// Solves the step with full contact cells 0..c-1 and the edge cell c, whose mean
     /// pressure is `ratio` times that of cell c - 1: returns (pressures 0..=c, force).
     fn solve_tied(&self, d: &StepData, c: usize, ratio: f64) -> Result<(Vec<f64>, f64)> {
+        let basis = self.tied_basis(d, c)?;
+        self.tied_solution(d, &basis, c, ratio)
+    }
+
+    /// The factorisation behind the tied solves of cell c ([`TiedBasis`]).
+    fn tied_basis(&self, d: &StepData, c: usize) -> Result<TiedBasis> {
         let n = c;
         let mut a = vec![0.0; n * n];
         let mut r = vec![0.0; n];
+        let mut u = vec![0.0; n];
         for i in 0..n {
             for j in 0..n {
                 a[i * n + j] = self.current(i, j) + d.coupling * self.weight(j);
             }
-            a[i * n + n - 1] += ratio * (self.current(i, c) + d.coupling * self.weight(c));
+            u[i] = self.current(i, c) + d.coupling * self.weight(c);
             r[i] = d.target(i, 0.0)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(0.0);
         }
-        let mut p = solve_dense(a, r, n).ok_or_else(|| ImpactError::Step {
+        let singular = || ImpactError::Step {
             time: format!("{:.6}", d.t),
             reason: "singular contact system".into(),
-        })?;
-        p.push(ratio * p[n - 1]);
+        };
+        let mut sol = solve_dense(a, vec![r, u], n).ok_or_else(singular)?;
+        let z = sol.pop().ok_or_else(singular)?;
+        let y = sol.pop().ok_or_else(singular)?;
+        Ok(TiedBasis { y, z })
+    }
+
+    /// The pressures of cells 0..=c and the force when cell c carries `ratio` times the
+    /// pressure of cell c - 1, from the step's [`TiedBasis`] of cell c.
+    fn tied_solution(
+        &self,
+        d: &StepData,
+        basis: &TiedBasis,
+        c: usize,
+        ratio: f64,
+    ) -> Result<(Vec<f64>, f64)> {
+        let last = c - 1;
+        let den = 1.0 + ratio * basis.z[last];
+        if !(den.abs() > 1e-300) || !den.is_finite() {
+            return Err(ImpactError::Step {
+                time: format!("{:.6}", d.t),
+                reason: "singular contact system".into(),
+            });
+        }
+        let k = ratio * basis.y[last] / den;
+        let mut p: Vec<f64> = basis
+            .y
+            .iter()
+            .zip(&basis.z)
+            .map(|(y, z)| y - k * z)
+            .collect();
+        p.push(ratio * p[last]);
         let force = p.iter().enumerate().map(|(j, v)| self.weight(j) * v).sum();
         Ok((p, force))
     }
@@ -698,9 +774,21 @@ impl<'a> March<'a> {
     fn free_edge(&self, d: &StepData, model: EdgeModel, start: usize) -> Result<StepSet> {
         let dx = self.dx;
         let top = (d.fbar.len() - 1).min(self.kcap);
-        let residual = |c: usize, theta: f64| -> Result<(f64, Vec<f64>, f64)> {
+        // one factorisation per edge cell tried, shared by the iterations on theta
+        let mut bases: Vec<Option<TiedBasis>> = Vec::new();
+        let mut residual = |c: usize, theta: f64| -> Result<(f64, Vec<f64>, f64)> {
             let (ratio, gap) = model.tie(theta, dx, c, Some(self.tables.shape_rules()));
-            let (p, f) = self.solve_tied(d, c, ratio)?;
+            if bases.len() <= c {
+                bases.resize_with(c + 1, || None);
+            }
+            if bases[c].is_none() {
+                bases[c] = Some(self.tied_basis(d, c)?);
+            }
+            let basis = bases[c].as_ref().ok_or_else(|| ImpactError::Step {
+                time: format!("{:.6}", d.t),
+                reason: "no factorisation of the edge cell's system".into(),
+            })?;
+            let (p, f) = self.tied_solution(d, basis, c, ratio)?;
             let rho = self.displacement(c, &d.hist, &p) - d.target(c, f)? - gap * p[c - 1];
             Ok((rho, p, f))
         };
