@@ -66,9 +66,20 @@ pub fn contour_h_min(bits: u32) -> f64 {
 /// `dim` real components, already multiplied by the Jacobian `jac`), divided by pi; the
 /// y-variable is mapped by y = Y u/(1 - u), Y = max(|x0|, 0.05), and the u-integral done by
 /// nested tanh-sinh to `rel_tol`.
-pub(crate) fn y_integral<T, G>(
+pub(crate) fn y_integral<T, G>(x0: &T, dim: usize, rel_tol: f64, prec: u32, g: G) -> (Vec<T>, f64)
+where
+    T: Real,
+    G: FnMut(&T, Cx<T>, &T, &mut [T]),
+{
+    y_integral_checked(x0, dim, dim, rel_tol, prec, g)
+}
+
+/// [`y_integral`] whose convergence test looks at the first `checked` components only
+/// ([`crate::quad::integrate_vec_checked`]).
+pub(crate) fn y_integral_checked<T, G>(
     x0: &T,
     dim: usize,
+    checked: usize,
     rel_tol: f64,
     prec: u32,
     mut g: G,
@@ -81,10 +92,11 @@ where
     let zero = x0.zero();
     let one = x0.one();
     let pi = x0.pi();
-    let (mut vals, err) = crate::quad::integrate_vec(
+    let (mut vals, err) = crate::quad::integrate_vec_checked(
         &zero,
         &one,
         dim,
+        checked,
         rel_tol,
         contour_h_min(prec),
         crate::quad::t_max(prec),

@@ -24,4 +24,7 @@ pub use apex::ApexExponents;
 pub use error::{GenuineError, Result};
 pub use kernels::{ContourDisplacement, Lamb};
 pub use solution::GenuineSolver;
-pub use solver::{load_through_kernels, roundoff_floor, GenuineCase, SolveOptions};
+pub use solver::{
+    load_through_kernels, roundoff_floor, GenuineCase, SolveOptions, NEAR_RAYLEIGH,
+    NEAR_RAYLEIGH_STEP,
+};

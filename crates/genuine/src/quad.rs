@@ -217,6 +217,27 @@ pub fn integrate_vec<T, F>(
     rel_tol: f64,
     h_min: f64,
     t_max: f64,
+    f: F,
+) -> (Vec<T>, f64)
+where
+    T: Real,
+    F: FnMut(&Node<T>, &mut [T]),
+{
+    integrate_vec_checked(a, b, dim, dim, rel_tol, h_min, t_max, f)
+}
+
+/// [`integrate_vec`] whose stopping test looks at the first `checked` components only: the
+/// others are carried on the same levels (for a probe whose own convergence does not matter,
+/// only its difference from the checked components).
+#[allow(clippy::too_many_arguments)]
+pub fn integrate_vec_checked<T, F>(
+    a: &T,
+    b: &T,
+    dim: usize,
+    checked: usize,
+    rel_tol: f64,
+    h_min: f64,
+    t_max: f64,
     mut f: F,
 ) -> (Vec<T>, f64)
 where
@@ -251,11 +272,11 @@ where
         // odd multiples of the new step
         add_nodes(&mut (-kmax..=kmax).filter(|k| k % 2 != 0), hn, &mut sum);
         let cur: Vec<T> = sum.iter().map(|s| s.clone() * hn).collect();
-        let scale = cur
+        let scale = cur[..checked.min(dim)]
             .iter()
             .fold(0.0_f64, |m, x| m.max(x.to_f64().abs()))
             .max(1e-300);
-        let diff = cur
+        let diff = cur[..checked.min(dim)]
             .iter()
             .zip(&prev)
             .fold(0.0_f64, |m, (x, y)| m.max((x.clone() - y).to_f64().abs()));

@@ -52,7 +52,7 @@ use wedge::{Coupling, Indenter, Material};
 
 use crate::basis::{Basis, Family};
 use crate::error::{invalid, GenuineError, Result};
-use crate::kernels::{y_integral, Lamb};
+use crate::kernels::{y_integral_checked, Lamb};
 use crate::lsq::{least_squares, Matrix};
 use crate::quad::{integrate_vec, tanh_sinh_unit, tanh_sinh_unit_node, UnitNode};
 
@@ -72,6 +72,18 @@ pub const ROUNDOFF_FLOOR: f64 = 1e-13;
 pub fn roundoff_floor(bits: u32) -> f64 {
     ROUNDOFF_FLOOR * 2f64.powi(53 - bits.max(53) as i32)
 }
+
+/// The fraction of the Rayleigh speed (p/m_R) above which the solve refines its contour step
+/// by [`NEAR_RAYLEIGH_STEP`] and, above f64, adds the plateau probe (a second fit of degree N
+/// on another collocation set, [`PLATEAU_MARGIN`]). Measured at 132 bits (Theta 89 deg,
+/// gamma 0.6): at p = 0.495 = 0.9986 m_R the contour rule of the plain step left 3.7e-32 and
+/// the degrees' extrapolation stated 5e-36 for an actual 9e-34; at p = 0.3 and 0.45 (0.61 and
+/// 0.91 m_R) the plain step and the extrapolation were within their estimates, and the
+/// 120-case comparison of `tests/error_estimates.rs` holds without the probe.
+pub const NEAR_RAYLEIGH: f64 = 0.95;
+
+/// The factor of the contour step within [`NEAR_RAYLEIGH`] of the Rayleigh speed.
+pub const NEAR_RAYLEIGH_STEP: f64 = 0.75;
 
 /// The margin on the difference between the fine fit and the fit of the same degree on
 /// another collocation set (the plateau of the least-squares solve, see
@@ -124,10 +136,11 @@ impl SolveOptions {
     /// The defaults for a working precision of `bits` bits (53 for f64), chosen so that every
     /// discretisation error is of the order of 2^-bits:
     ///
-    /// * `h_tanh = (3/4) pi^2/((bits + 4) ln 2)` (the v-rule's error is exp(-c/h), c = pi^2
-    ///   for a pole above the split point; next to the Rayleigh speed c falls to about
-    ///   (3/4) pi^2, 3.7e-32 instead of 1e-41 at 132 bits with the factor 1; the level-doubling
-    ///   probe of the solve reports what is left);
+    /// * `h_tanh = pi^2/((bits + 4) ln 2)` (the v-rule's error is exp(-c/h), c = pi^2 for a
+    ///   pole above the split point; within [`NEAR_RAYLEIGH`] of the Rayleigh speed c falls to
+    ///   about (3/4) pi^2, 3.7e-32 instead of 1e-41 at 132 bits, and the solve takes
+    ///   [`NEAR_RAYLEIGH_STEP`] times the step given; the level-doubling probe of the solve
+    ///   reports what is left);
     /// * `h_quad = 1/32 * (53/bits)^(1/2)` (the rows' integrands are analytic inside the
     ///   tanh-sinh strip except at the ends, where the rule is double-exponential; measured at
     ///   128 bits, halving `h_quad` from this value changes nothing above 1e-37);
@@ -151,7 +164,7 @@ impl SolveOptions {
             oversample: if bits <= 64 { 2.0 } else { 1.5 },
             h_quad: 1.0 / 32.0 * (53.0 / b).sqrt(),
             contour_tol: 2f64.powi(-(b as i32 - 7)),
-            h_tanh: 0.75 * std::f64::consts::PI.powi(2) / ((b + 4.0) * std::f64::consts::LN_2),
+            h_tanh: std::f64::consts::PI.powi(2) / ((b + 4.0) * std::f64::consts::LN_2),
             apex_lambdas: None,
         }
     }
@@ -474,7 +487,7 @@ impl<T: Real> Problem<T> {
     /// (U_y, U_x, U_y', U_x') at x0 > 0 of the load whose slope h = dS/dx, times the rule's
     /// weight, is `hw[i]` at the contour sample i; with the estimated absolute error.
     fn contour(&self, samples: &[Sample<T>], hw: &[T], x0: &T, tol: f64) -> ([T; 4], f64) {
-        let (mut u, err) = self.contour_many(samples, &[hw], x0, tol);
+        let (mut u, err) = self.contour_many(samples, &[hw], 0, x0, tol);
         (
             u.pop()
                 .unwrap_or_else(|| std::array::from_fn(|_| x0.zero())),
@@ -488,6 +501,7 @@ impl<T: Real> Problem<T> {
         &self,
         samples: &[Sample<T>],
         hws: &[&[T]],
+        probes: usize,
         x0: &T,
         tol: f64,
     ) -> (Vec<[T; 4]>, f64) {
@@ -509,51 +523,55 @@ impl<T: Real> Problem<T> {
             })
             .collect();
         let zero = x0.zero();
-        let (vals, err) = y_integral(x0, 4 * nc, tol, self.prec, |y, z, jac, out| {
-            let z2 = z.clone() * &z;
-            let (zr, zi) = (z2.re, z2.im);
-            let zi2 = zi.clone().sqr();
-            let one = zi.one();
-            // per load: Sum a q/|.|^2, Sum a/|.|^2, Sum b q/|.|^2, Sum b/|.|^2
-            let mut acc = vec![zero.clone(); 4 * nc];
-            // temporaries reused across the loop (no allocation per term in MPFR)
-            let (mut q, mut n, mut inv, mut t) =
-                (zero.clone(), zero.clone(), zero.clone(), zero.clone());
-            for (i, v2i) in v2.iter().enumerate() {
-                // 1/(v^2 - z^2) = (q + i Im z^2)/(q^2 + (Im z^2)^2), q = v^2 - Re z^2
-                q.clone_from(v2i);
-                q -= &zr;
-                n.clone_from(&zi2);
-                n.mul_add_assign(&q, &q);
-                inv.clone_from(&one);
-                inv /= &n;
-                for (c, abc) in ab.iter().enumerate() {
-                    let (a, b) = &abc[i];
-                    let o = &mut acc[4 * c..4 * c + 4];
-                    t.clone_from(a);
-                    t *= &inv;
-                    o[0].mul_add_assign(&t, &q);
-                    o[1] += &t;
-                    t.clone_from(b);
-                    t *= &inv;
-                    o[2].mul_add_assign(&t, &q);
-                    o[3] += &t;
+        // the last `probes` loads ride on the levels the others need (their difference from
+        // the first load is what is wanted, far above the y-rule's error)
+        let checked = 4 * (nc - probes.min(nc));
+        let (vals, err) =
+            y_integral_checked(x0, 4 * nc, checked, tol, self.prec, |y, z, jac, out| {
+                let z2 = z.clone() * &z;
+                let (zr, zi) = (z2.re, z2.im);
+                let zi2 = zi.clone().sqr();
+                let one = zi.one();
+                // per load: Sum a q/|.|^2, Sum a/|.|^2, Sum b q/|.|^2, Sum b/|.|^2
+                let mut acc = vec![zero.clone(); 4 * nc];
+                // temporaries reused across the loop (no allocation per term in MPFR)
+                let (mut q, mut n, mut inv, mut t) =
+                    (zero.clone(), zero.clone(), zero.clone(), zero.clone());
+                for (i, v2i) in v2.iter().enumerate() {
+                    // 1/(v^2 - z^2) = (q + i Im z^2)/(q^2 + (Im z^2)^2), q = v^2 - Re z^2
+                    q.clone_from(v2i);
+                    q -= &zr;
+                    n.clone_from(&zi2);
+                    n.mul_add_assign(&q, &q);
+                    inv.clone_from(&one);
+                    inv /= &n;
+                    for (c, abc) in ab.iter().enumerate() {
+                        let (a, b) = &abc[i];
+                        let o = &mut acc[4 * c..4 * c + 4];
+                        t.clone_from(a);
+                        t *= &inv;
+                        o[0].mul_add_assign(&t, &q);
+                        o[1] += &t;
+                        t.clone_from(b);
+                        t *= &inv;
+                        o[2].mul_add_assign(&t, &q);
+                        o[3] += &t;
+                    }
                 }
-            }
-            let zinv = z.recip();
-            let k = self.lamb.kernels(&zinv);
-            let ng = -self.gamma.clone();
-            for c in 0..nc {
-                let o = &acc[4 * c..4 * c + 4];
-                let fy = Cx::new(o[0].clone(), o[1].clone() * &zi);
-                let fx = (Cx::new(o[2].clone(), o[3].clone() * &zi) * &zinv).scale(&ng);
-                for j in 0..2 {
-                    let g = (k[j][0].clone() * &fy + k[j][1].clone() * &fx) * &zinv;
-                    out[4 * c + j] = g.im.clone() * y * jac;
-                    out[4 * c + 2 + j] = g.re * jac;
+                let zinv = z.recip();
+                let k = self.lamb.kernels(&zinv);
+                let ng = -self.gamma.clone();
+                for c in 0..nc {
+                    let o = &acc[4 * c..4 * c + 4];
+                    let fy = Cx::new(o[0].clone(), o[1].clone() * &zi);
+                    let fx = (Cx::new(o[2].clone(), o[3].clone() * &zi) * &zinv).scale(&ng);
+                    for j in 0..2 {
+                        let g = (k[j][0].clone() * &fy + k[j][1].clone() * &fx) * &zinv;
+                        out[4 * c + j] = g.im.clone() * y * jac;
+                        out[4 * c + 2 + j] = g.re * jac;
+                    }
                 }
-            }
-        });
+            });
         let mut it = vals.into_iter();
         let rows = (0..nc)
             .map(|_| std::array::from_fn(|_| it.next().unwrap_or_else(|| x0.zero())))
@@ -709,6 +727,14 @@ impl<T: CachedRules> GenuineCase<T> {
             return Err(invalid("h_tanh", opts.h_tanh, "(0, 1]"));
         }
         let prob = Problem::new(material, indenter, p)?;
+        // next to the Rayleigh speed the contour rule converges more slowly and the degrees'
+        // convergence flattens into the least-squares plateau: a finer contour step and the
+        // plateau probe there (see [`NEAR_RAYLEIGH`])
+        let near = (prob.p.clone() / prob.ray.m_r()).to_f64() > NEAR_RAYLEIGH;
+        let mut opts = opts;
+        if near {
+            opts.h_tanh *= NEAR_RAYLEIGH_STEP;
+        }
         let basis = prob.basis(opts.degree, &opts);
         // the coarser sizes of the error estimates: N/2 and 3N/4 (see
         // [`GenuineCase::error_estimate`] and [`GenuineCase::apex_with_error`])
@@ -723,8 +749,9 @@ impl<T: CachedRules> GenuineCase<T> {
             let (c, r) = prob.fit(&b, &rows, &opts)?;
             fits.push((b, c, r));
         }
-        // the plateau probe: degree N on another collocation set (above f64 only)
-        let plateau = prob.prec > 64;
+        // the plateau probe: degree N on another collocation set (above f64, next to the
+        // Rayleigh speed)
+        let plateau = near && prob.prec > 64;
         if plateau {
             let other = SolveOptions {
                 oversample: opts.oversample * 1.25,
@@ -745,7 +772,7 @@ impl<T: CachedRules> GenuineCase<T> {
             .collect();
         hws.push(probe);
         let loads: Vec<&[T]> = hws.iter().map(|h| h.as_slice()).collect();
-        let (u, y_err) = prob.contour_many(&cont, &loads, &xs, opts.contour_tol);
+        let (u, y_err) = prob.contour_many(&cont, &loads, 1, &xs, opts.contour_tol);
         let no_value = || GenuineError::NoConvergence {
             what: "contour",
             detail: "no value".into(),

@@ -310,8 +310,9 @@ fn near_rayleigh_estimates_cover_the_contour_rule() {
         h_tanh: opts.h_tanh / 2.0,
         ..opts.clone()
     };
+    // the plain step (the solve refines it by NEAR_RAYLEIGH_STEP here)
     let coarse_step = SolveOptions {
-        h_tanh: opts.h_tanh / 0.75,
+        h_tanh: opts.h_tanh / genuine::NEAR_RAYLEIGH_STEP,
         ..opts.clone()
     };
     let reference = GenuineCase::solve(&mat, &ind, p.clone(), fine).unwrap();
