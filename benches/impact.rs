@@ -1,6 +1,6 @@
 //! Benchmarks of the impact engine (crate `impact`), f64, one thread: the reference case (free
 //! rigid cylinder, m0/(rho R^2) = 10, V0/c1 = 0.01, c2/c1 = 1000/1870.83, to c1 t/R = 10) on one
-//! grid at dx = R/50 and R/100, and with three grids (the error estimates) at R/100; the same
+//! grid at dx = R/50 and R/100, and with three grids (the error estimates) at R/100 and R/200; the same
 //! case with a thin-shell striker of equal mass (h_s/R = 0.05, steel) on one grid at R/100.
 //! The cost against N_t and N_x with fitted exponents: `cargo run --release -p impact
 //! --example cost_scaling`.
@@ -26,7 +26,7 @@ fn reference(dx: f64, levels: usize, mass_ratio: f64) -> ImpactCase {
 fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("impact");
     g.sample_size(10);
-    for (dx, levels) in [(0.02, 1), (0.01, 1), (0.01, 3)] {
+    for (dx, levels) in [(0.02, 1), (0.01, 1), (0.01, 3), (0.005, 3)] {
         let case = reference(dx, levels, 10.0);
         g.bench_with_input(
             BenchmarkId::new(

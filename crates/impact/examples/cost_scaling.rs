@@ -61,7 +61,7 @@ fn punch(a: f64, end: f64) -> ImpactCase {
 fn main() {
     println!("driven flat punch, dx = R/100, kappa = 2: cost against N_t (a = 0.2 R)");
     let mut pts = Vec::new();
-    for end in [1.0, 2.0, 4.0, 8.0] {
+    for end in [1.0, 2.0, 4.0, 8.0, 16.0] {
         let (s, nt, nx) = seconds(&punch(0.2, end));
         println!("  N_t = {nt:5}  N_x = {nx:4}  {s:.4} s");
         pts.push((nt as f64, s));
@@ -69,7 +69,7 @@ fn main() {
     println!("  fitted exponent of N_t: {:.2}", exponent(&pts));
     println!("driven flat punch, dx = R/100: cost against N_x (c1 t/R = 2)");
     let mut pts = Vec::new();
-    for a in [0.1, 0.2, 0.4, 0.8] {
+    for a in [0.1, 0.2, 0.4, 0.8, 1.6] {
         let (s, nt, nx) = seconds(&punch(a, 2.0));
         println!("  N_t = {nt:5}  N_x = {nx:4}  {s:.4} s");
         pts.push((nx as f64, s));
@@ -77,7 +77,7 @@ fn main() {
     println!("  fitted exponent of N_x: {:.2}", exponent(&pts));
     println!("reference case (free rigid cylinder to c1 t/R = 10), one grid: cost against 1/dx");
     let mut pts = Vec::new();
-    for dx in [0.04, 0.02, 0.01, 0.005] {
+    for dx in [0.04, 0.02, 0.01, 0.005, 0.0025] {
         let mut c = ImpactCase::reference(EdgeLaw::Signorini);
         c.dx = dx;
         c.levels = 1;
