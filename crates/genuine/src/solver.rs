@@ -239,8 +239,8 @@ struct ContourProbe {
     y_rel: f64,
 }
 
-/// The margin of the contour probe's extrapolation (the level doubling of the v-rule): the error of the
-/// rule of step h is taken as `CONTOUR_MARGIN` d^2/|q| from d = |q(h) - q(2h)|. Measured at
+/// The margin of the contour probe's extrapolation (the level doubling of the v-rule): the
+/// error of the rule of step h is taken as `CONTOUR_MARGIN` d^2/|q| from d = |q(h) - q(2h)|. Measured at
 /// 132 bits (Theta 89 deg, gamma 0.6), the actual error was 3.5 (p = 0.3) to 350 (p = 0.45,
 /// 0.495, next to the Rayleigh speed) times d^2 (q of order 0.4): the margin keeps the estimate
 /// at least 30 times above the error.
