@@ -210,22 +210,28 @@ fn rayleigh_constants_against_the_raw_rayleigh_function() {
     }
 }
 
+/// Cells [sa, sb] of s for the moment checks: at the origin, across and next to the Rayleigh
+/// arrival, between the fronts, across the P front, and `last`.
+fn moment_cells(hp: &HalfPlane<f64>, last: (f64, f64)) -> [(f64, f64); 8] {
+    let (m, sr) = (*hp.m(), *hp.s_r());
+    [
+        (0.0, 0.2),
+        (0.02, sr - 0.01),
+        (0.1, 0.95),
+        (sr + 1e-3, m),
+        (m, 1.0),
+        (0.5 * (m + 1.0), 1.2),
+        (sr - 1e-3, sr + 2e-3),
+        last,
+    ]
+}
+
 #[test]
 fn moments_equal_quadrature_of_the_impulse_responses() {
     for nu in POISSON {
         let hp = HalfPlane::from_poisson(nu).unwrap();
         let (m, sr) = (*hp.m(), *hp.s_r());
-        let cells = [
-            (0.0, 0.2),
-            (0.02, sr - 0.01),
-            (0.1, 0.95),
-            (sr + 1e-3, m),
-            (m, 1.0),
-            (0.5 * (m + 1.0), 1.2),
-            (sr - 1e-3, sr + 2e-3),
-            (0.3 * sr, 0.5 * (sr + m)),
-        ];
-        for (sa, sb) in cells {
+        for (sa, sb) in moment_cells(&hp, (0.3 * sr, 0.5 * (sr + m))) {
             for n in 0..3usize {
                 if n > 0 && sa == 0.0 {
                     continue;
@@ -400,17 +406,8 @@ fn first_moment_equals_quadrature_of_the_impulse_response() {
     let m1 = |hp: &HalfPlane<f64>, s: f64| hp.first_moment_zz(&s).unwrap();
     for nu in POISSON {
         let hp = HalfPlane::from_poisson(nu).unwrap();
-        let (m, sr) = (*hp.m(), *hp.s_r());
-        for (sa, sb) in [
-            (0.0, 0.2),
-            (0.02, sr - 0.01),
-            (0.1, 0.95),
-            (sr + 1e-3, m),
-            (m, 1.0),
-            (0.5 * (m + 1.0), 1.2),
-            (sr - 1e-3, sr + 2e-3),
-            (0.0, 1.0),
-        ] {
+        let sr = *hp.s_r();
+        for (sa, sb) in moment_cells(&hp, (0.0, 1.0)) {
             let (a, b) = (m1(&hp, sa), m1(&hp, sb));
             let got = a.value - b.value;
             let want = moment_by_quadrature(&hp, 0, -1, &sa, &sb, 1e-15);
