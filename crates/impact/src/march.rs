@@ -99,65 +99,97 @@ pub struct March<'a> {
     /// The history sums of the half-plane's and the striker's displacements.
     history: HistorySum,
     striker_history: Option<HistorySum>,
+    /// The factorised systems by number of contact cells (and the coupling they were built
+    /// with).
+    systems: std::cell::RefCell<(f64, Vec<Option<std::rc::Rc<CellSystem>>>)>,
 }
 
-/// Solves a x = r for each right-hand side r of `rhs` (a row-major n x n), by Gaussian
-/// elimination with partial pivoting; `None` when a pivot vanishes or a result is not finite.
-fn solve_dense(mut a: Vec<f64>, mut rhs: Vec<Vec<f64>>, n: usize) -> Option<Vec<Vec<f64>>> {
-    for c in 0..n {
-        let mut piv = c;
-        for i in c + 1..n {
-            if a[i * n + c].abs() > a[piv * n + c].abs() {
-                piv = i;
-            }
-        }
-        if !(a[piv * n + c].abs() > 0.0) {
-            return None;
-        }
-        if piv != c {
-            for j in 0..n {
-                a.swap(c * n + j, piv * n + j);
-            }
-            for r in rhs.iter_mut() {
-                r.swap(c, piv);
-            }
-        }
-        let d = a[c * n + c];
-        for i in c + 1..n {
-            let f = a[i * n + c] / d;
-            if f != 0.0 {
-                for j in c..n {
-                    a[i * n + j] -= f * a[c * n + j];
-                }
-                for r in rhs.iter_mut() {
-                    r[i] -= f * r[c];
+/// The LU factorisation with partial pivoting of a row-major n x n matrix.
+#[derive(Debug)]
+struct Lu {
+    n: usize,
+    /// U on and above the diagonal, the multipliers of L below it.
+    a: Vec<f64>,
+    /// The row swapped into place at each column.
+    piv: Vec<usize>,
+}
+
+impl Lu {
+    /// Factorises `a`; `None` when a pivot vanishes.
+    fn new(mut a: Vec<f64>, n: usize) -> Option<Self> {
+        let mut piv = Vec::with_capacity(n);
+        for c in 0..n {
+            let mut p = c;
+            for i in c + 1..n {
+                if a[i * n + c].abs() > a[p * n + c].abs() {
+                    p = i;
                 }
             }
+            if !(a[p * n + c].abs() > 0.0) {
+                return None;
+            }
+            if p != c {
+                for j in 0..n {
+                    a.swap(c * n + j, p * n + j);
+                }
+            }
+            piv.push(p);
+            let d = a[c * n + c];
+            for i in c + 1..n {
+                let f = a[i * n + c] / d;
+                a[i * n + c] = f;
+                if f != 0.0 {
+                    for j in c + 1..n {
+                        a[i * n + j] -= f * a[c * n + j];
+                    }
+                }
+            }
         }
+        Some(Lu { n, a, piv })
     }
-    let mut out = Vec::with_capacity(rhs.len());
-    for r in rhs {
-        let mut x = vec![0.0; n];
+
+    /// The solution of a x = r; `None` when it is not finite.
+    fn solve(&self, r: &[f64]) -> Option<Vec<f64>> {
+        let (n, a) = (self.n, &self.a);
+        let mut x = r.to_vec();
+        // the rows were swapped whole (multipliers included): all swaps first, then L
+        for (c, &p) in self.piv.iter().enumerate() {
+            x.swap(c, p);
+        }
+        for c in 0..n {
+            let xc = x[c];
+            if xc != 0.0 {
+                for i in c + 1..n {
+                    x[i] -= a[i * n + c] * xc;
+                }
+            }
+        }
         for i in (0..n).rev() {
-            let mut s = r[i];
+            let mut s = x[i];
             for j in i + 1..n {
                 s -= a[i * n + j] * x[j];
             }
             x[i] = s / a[i * n + i];
         }
-        if !x.iter().all(|v| v.is_finite()) {
-            return None;
-        }
-        out.push(x);
+        x.iter().all(|v| v.is_finite()).then_some(x)
     }
-    Some(out)
+}
+
+/// The step's system of the contact cells 0..c - 1 depends on c alone (the current step's
+/// coefficients and the striker's coupling are the same at every step): its factorisation
+/// and M^-1 u for the column u of cell c, kept for the whole march.
+#[derive(Debug)]
+struct CellSystem {
+    lu: Lu,
+    z: Vec<f64>,
 }
 
 /// The two solutions behind every tied solve of one step and edge cell c: y = M^-1 r and
 /// z = M^-1 u, M the system of the cells 0..c - 1 (with the striker's coupling), r the
 /// right-hand side and u the edge cell's column. The tied system M + ratio u e^T (e the last
 /// cell) then has the solution y - ratio z (e.y)/(1 + ratio e.z) (Sherman-Morrison), so the
-/// iterations on the edge's position cost O(c) each instead of a factorisation.
+/// iterations on the edge's position cost O(c) each instead of a factorisation; M's
+/// factorisation and z are the same at every step ([`CellSystem`]), so a step costs O(c^2).
 struct TiedBasis {
     y: Vec<f64>,
     z: Vec<f64>,
@@ -358,6 +390,7 @@ impl<'a> March<'a> {
             edge_gap_scale: striker.is_none().then_some(1.0),
             history: HistorySum::new(dx, None),
             striker_history: striker.is_some().then(|| HistorySum::new(dx, None)),
+            systems: std::cell::RefCell::new((f64::NAN, Vec::new())),
             striker,
             steps: Vec::new(),
             separation: None,
@@ -714,27 +747,59 @@ impl<'a> March<'a> {
         self.tied_solution(d, &basis, c, ratio)
     }
 
-    /// The factorisation behind the tied solves of cell c ([`TiedBasis`]).
-    fn tied_basis(&self, d: &StepData, c: usize) -> Result<TiedBasis> {
+    /// The factorised system of the cells 0..c - 1 and M^-1 u ([`CellSystem`]), built once
+    /// per march.
+    fn cell_system(&self, d: &StepData, c: usize) -> Result<std::rc::Rc<CellSystem>> {
+        {
+            let cache = self.systems.borrow();
+            if cache.0 == d.coupling {
+                if let Some(Some(sys)) = cache.1.get(c) {
+                    return Ok(sys.clone());
+                }
+            }
+        }
         let n = c;
         let mut a = vec![0.0; n * n];
-        let mut r = vec![0.0; n];
         let mut u = vec![0.0; n];
         for i in 0..n {
             for j in 0..n {
                 a[i * n + j] = self.current(i, j) + d.coupling * self.weight(j);
             }
             u[i] = self.current(i, c) + d.coupling * self.weight(c);
-            r[i] = d.target(i, 0.0)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(0.0);
         }
         let singular = || ImpactError::Step {
             time: format!("{:.6}", d.t),
             reason: "singular contact system".into(),
         };
-        let mut sol = solve_dense(a, vec![r, u], n).ok_or_else(singular)?;
-        let z = sol.pop().ok_or_else(singular)?;
-        let y = sol.pop().ok_or_else(singular)?;
-        Ok(TiedBasis { y, z })
+        let lu = Lu::new(a, n).ok_or_else(singular)?;
+        let z = lu.solve(&u).ok_or_else(singular)?;
+        let sys = std::rc::Rc::new(CellSystem { lu, z });
+        let mut cache = self.systems.borrow_mut();
+        if cache.0 != d.coupling {
+            *cache = (d.coupling, Vec::new());
+        }
+        if cache.1.len() <= c {
+            cache.1.resize_with(c + 1, || None);
+        }
+        cache.1[c] = Some(sys.clone());
+        Ok(sys)
+    }
+
+    /// The two solutions behind the tied solves of cell c at this step ([`TiedBasis`]).
+    fn tied_basis(&self, d: &StepData, c: usize) -> Result<TiedBasis> {
+        let sys = self.cell_system(d, c)?;
+        let mut r = vec![0.0; c];
+        for (i, ri) in r.iter_mut().enumerate() {
+            *ri = d.target(i, 0.0)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(0.0);
+        }
+        let y = sys.lu.solve(&r).ok_or_else(|| ImpactError::Step {
+            time: format!("{:.6}", d.t),
+            reason: "singular contact system".into(),
+        })?;
+        Ok(TiedBasis {
+            y,
+            z: sys.z.clone(),
+        })
     }
 
     /// The pressures of cells 0..=c and the force when cell c carries `ratio` times the
@@ -882,6 +947,37 @@ mod tests {
     }
 
     /// Tables whose rules the march passes to the shape correction.
+    /// The LU factorisation solves a system that needs pivoting (a zero leading entry) to its
+    /// residual's rounding, for several right-hand sides, and refuses a singular matrix.
+    #[test]
+    fn lu_solves_with_pivoting_and_refuses_a_singular_matrix() {
+        let n = 7;
+        let a: Vec<f64> = (0..n * n)
+            .map(|k| {
+                let (i, j) = (k / n, k % n);
+                if i == 0 && j == 0 {
+                    0.0
+                } else {
+                    1.0 / (1.0 + (i as f64 - j as f64).abs()) + ((i * 7 + j * 3) % 5) as f64 * 0.1
+                }
+            })
+            .collect();
+        let lu = Lu::new(a.clone(), n).unwrap();
+        for r in [vec![1.0; n], (0..n).map(|i| i as f64 - 3.0).collect()] {
+            let x = lu.solve(&r).unwrap();
+            for i in 0..n {
+                let ax: f64 = (0..n).map(|j| a[i * n + j] * x[j]).sum();
+                assert!((ax - r[i]).abs() < 1e-12, "row {i}: {ax} vs {}", r[i]);
+            }
+        }
+        // a column of zeros: no pivot
+        let mut sing = a;
+        for i in 0..n {
+            sing[i * n + 3] = 0.0;
+        }
+        assert!(Lu::new(sing, n).is_none());
+    }
+
     fn tables() -> Tables {
         Tables::new(lamb::HalfPlane::from_poisson(0.25).unwrap(), 2.0).unwrap()
     }
