@@ -918,7 +918,7 @@ impl<T: CachedRules> GenuineCase<T> {
         q: impl Fn(&Fit<T>) -> Result<T>,
     ) -> Result<f64> {
         let d2 = (fine.clone() - q(&self.coarse)?).abs().to_f64();
-        let floor = self.floor() * fine.to_f64().abs();
+        let floor = roundoff_floor(self.prob.prec) * fine.to_f64().abs();
         let high = self.prob.prec > 64;
         let d4 = (fine.clone() - q(&self.middle)?).abs().to_f64();
         let d = match (extrapolate, high) {
@@ -934,11 +934,6 @@ impl<T: CachedRules> GenuineCase<T> {
         Ok(d + floor + contour + plateau)
     }
 
-    /// The relative floor of every estimate: [`roundoff_floor`] of the working precision.
-    fn floor(&self) -> f64 {
-        roundoff_floor(self.prob.prec)
-    }
-
     /// The relative error of the solution's scale from the contour integrals (every quantity
     /// proportional to the coefficients carries it).
     pub(crate) fn contour_scale_error(&self) -> f64 {
@@ -948,7 +943,7 @@ impl<T: CachedRules> GenuineCase<T> {
     /// The contour integrals' share of the error of a quantity proportional to the solution's
     /// coefficients (their scale comes from the slope condition).
     fn scaled_contour_error(&self, q: &T) -> f64 {
-        self.contour.scale_error() * q.to_f64().abs()
+        self.contour_scale_error() * q.to_f64().abs()
     }
 
     /// [`Self::force_hat`] with its absolute error estimate (the rule of

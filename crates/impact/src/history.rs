@@ -69,12 +69,6 @@ impl KernelRows for Compliance {
     }
 }
 
-/// The FFT plans and the kernel's transform of one level.
-struct Level {
-    /// Transform of the kernel, laid out [space][time] (space M = 4W, time 2^(q+1)).
-    spectrum: Vec<Complex<f64>>,
-}
-
 /// The history sum of one kernel: the pressures of the steps so far and the accumulated
 /// displacements of the steps to come.
 pub(crate) struct HistorySum {
@@ -90,8 +84,9 @@ pub(crate) struct HistorySum {
     /// summed so far; `first` is the first target not yet consumed.
     acc: std::collections::VecDeque<Vec<f64>>,
     first: usize,
-    /// Kernel transforms by level (for the current width).
-    levels: Vec<Option<Level>>,
+    /// The kernel's transform by level, laid out [space][time] (space 4W, time 2^(q+1)), for
+    /// the current width.
+    levels: Vec<Option<Vec<Complex<f64>>>>,
     planner: FftPlanner<f64>,
 }
 
@@ -317,8 +312,7 @@ impl HistorySum {
         let full = self.horizon.is_none_or(|h| c + len <= h);
         let spectrum = if full {
             if self.levels[q].is_none() {
-                let s = self.kernel_spectrum(kernel, len, nt - 1);
-                self.levels[q] = Some(Level { spectrum: s });
+                self.levels[q] = Some(self.kernel_spectrum(kernel, len, nt - 1));
             }
             None
         } else {
@@ -338,10 +332,7 @@ impl HistorySum {
         let mut tr = self.forward_2d(&mut data, nt, ns);
         let ker = match &spectrum {
             Some(s) => s.as_slice(),
-            None => self.levels[q]
-                .as_ref()
-                .map(|l| l.spectrum.as_slice())
-                .unwrap_or(&[]),
+            None => self.levels[q].as_deref().unwrap_or(&[]),
         };
         for (a, b) in tr.iter_mut().zip(ker) {
             *a *= b;

@@ -192,7 +192,7 @@ struct CellSystem {
 /// factorisation and z are the same at every step ([`CellSystem`]), so a step costs O(c^2).
 struct TiedBasis {
     y: Vec<f64>,
-    z: Vec<f64>,
+    system: std::rc::Rc<CellSystem>,
 }
 
 /// The local model of the edge cell (`docs/impact.md`, section 4): inside the contact the
@@ -796,10 +796,7 @@ impl<'a> March<'a> {
             time: format!("{:.6}", d.t),
             reason: "singular contact system".into(),
         })?;
-        Ok(TiedBasis {
-            y,
-            z: sys.z.clone(),
-        })
+        Ok(TiedBasis { y, system: sys })
     }
 
     /// The pressures of cells 0..=c and the force when cell c carries `ratio` times the
@@ -812,7 +809,8 @@ impl<'a> March<'a> {
         ratio: f64,
     ) -> Result<(Vec<f64>, f64)> {
         let last = c - 1;
-        let den = 1.0 + ratio * basis.z[last];
+        let z = &basis.system.z;
+        let den = 1.0 + ratio * z[last];
         if !(den.abs() > 1e-300) || !den.is_finite() {
             return Err(ImpactError::Step {
                 time: format!("{:.6}", d.t),
@@ -820,12 +818,7 @@ impl<'a> March<'a> {
             });
         }
         let k = ratio * basis.y[last] / den;
-        let mut p: Vec<f64> = basis
-            .y
-            .iter()
-            .zip(&basis.z)
-            .map(|(y, z)| y - k * z)
-            .collect();
+        let mut p: Vec<f64> = basis.y.iter().zip(z).map(|(y, z)| y - k * z).collect();
         p.push(ratio * p[last]);
         let force = p.iter().enumerate().map(|(j, v)| self.weight(j) * v).sum();
         Ok((p, force))

@@ -74,13 +74,7 @@ impl<T: CachedRules> HalfPlane<T> {
             return Ok(zero_triple(s));
         }
         let eps = s.epsilon().to_f64();
-        let total = match self.total.get() {
-            Some(t) => t.clone(),
-            None => {
-                let t = self.moment(0, &s.zero())?;
-                self.total.get_or_init(|| t).clone()
-            }
-        };
+        let total = self.total_moment(s)?;
         let half = if order == 1 { 1.0 } else { 0.5 };
         if *s >= 1.0 {
             return Ok(total.map(|e| Estimate {
@@ -192,20 +186,8 @@ impl<T: CachedRules> HalfPlane<T> {
     /// xi(s) of [`HalfPlane::cell_mean_primitive_zz`], s > 0, s != s_R.
     fn xi_zz(&self, s: &T) -> Result<Estimate<T>> {
         let eps = s.epsilon().to_f64();
-        let total0 = match self.total.get() {
-            Some(t) => t.zz.clone(),
-            None => {
-                let t = self.moment(0, &s.zero())?;
-                self.total.get_or_init(|| t).zz.clone()
-            }
-        };
-        let total1 = match self.moments.first_zz_total.get() {
-            Some(t) => t.clone(),
-            None => {
-                let t = self.first_moment_zz(&s.zero())?;
-                self.moments.first_zz_total.get_or_init(|| t).clone()
-            }
-        };
+        let total0 = self.total_moment(s)?.zz;
+        let total1 = self.first_zz_total(s)?;
         if *s >= 1.0 {
             // beyond the P front every moment of s vanishes
             let a = s.clone() * &total0.value;
@@ -265,28 +247,7 @@ impl<T: CachedRules> HalfPlane<T> {
     fn xi_zz_series(&self, s: &T) -> Result<Estimate<T>> {
         let eps = s.epsilon().to_f64();
         let g = self.zz_series();
-        let c1 = match self.moments.step_constant.get() {
-            Some(c) => c.clone(),
-            None => {
-                let at = self.s_r.clone() / 2.0;
-                let w = self.moment(1, &at)?.zz;
-                let u = at.clone().sqr();
-                let mut sum = w.value.clone() + g[0].clone() * at.ln();
-                let mut mag = sum.to_f64().abs();
-                let mut uk = u.clone();
-                for (k, gk) in g.iter().enumerate().skip(1) {
-                    let t = gk.clone() * &uk / (2 * k) as f64;
-                    mag += t.to_f64().abs();
-                    sum += &t;
-                    uk *= &u;
-                }
-                let c = Estimate {
-                    err: w.err + 8.0 * eps * mag + self.series_tail(g, &u),
-                    value: sum,
-                };
-                self.moments.step_constant.get_or_init(|| c).clone()
-            }
-        };
+        let c1 = self.step_constant(g)?;
         let u = s.clone().sqr();
         // Horner in u over sum_k g_k e_k u^k
         let mut poly = s.zero();
@@ -307,20 +268,56 @@ impl<T: CachedRules> HalfPlane<T> {
         let log = (c1.value.clone() - g[0].clone() * s.clone().ln()) / 2.0;
         let inner = log.clone() + &poly;
         let uf = u.to_f64();
-        let err =
-            uf * (c1.err / 2.0 + 8.0 * eps * (log.to_f64().abs() + mag) + self.series_tail(g, &u));
+        let err = uf * (c1.err / 2.0 + 8.0 * eps * (log.to_f64().abs() + mag) + series_tail(g, &u));
         Ok(Estimate {
             value: inner * &u,
             err,
         })
     }
 
-    /// A bound of the truncation of the Taylor series of g_zz at u (<= s_R^2/4): the last
-    /// term kept, times the geometric factor of terms falling at least like 4^-k, times 2.
-    fn series_tail(&self, g: &[T], u: &T) -> f64 {
-        let last = g.len() - 1;
-        let t = g[last].to_f64().abs() * u.to_f64().powi(last as i32);
-        4.0 * t
+    /// M_0(0) = Int_0^1 g ds, formed on first use (every corner and cell mean needs it).
+    fn total_moment(&self, like: &T) -> Result<Triple<Estimate<T>>> {
+        if let Some(t) = self.total.get() {
+            return Ok(t.clone());
+        }
+        let t = self.moment(0, &like.zero())?;
+        Ok(self.total.get_or_init(|| t).clone())
+    }
+
+    /// M_{-1}^zz(0) = Int_0^1 s g_zz ds, formed on first use.
+    fn first_zz_total(&self, like: &T) -> Result<Estimate<T>> {
+        if let Some(t) = self.moments.first_zz_total.get() {
+            return Ok(t.clone());
+        }
+        let t = self.first_moment_zz(&like.zero())?;
+        Ok(self.moments.first_zz_total.get_or_init(|| t).clone())
+    }
+
+    /// C_1 = lim_{s -> 0} (W_zz(s) + g_0 ln s), from the closed-form step response at s_R/2
+    /// less the series' other terms there, formed on first use (`g` the Taylor coefficients
+    /// of g_zz in s^2).
+    fn step_constant(&self, g: &[T]) -> Result<Estimate<T>> {
+        if let Some(c) = self.moments.step_constant.get() {
+            return Ok(c.clone());
+        }
+        let at = self.s_r.clone() / 2.0;
+        let eps = at.epsilon().to_f64();
+        let w = self.moment(1, &at)?.zz;
+        let u = at.clone().sqr();
+        let mut sum = w.value.clone() + g[0].clone() * at.ln();
+        let mut mag = sum.to_f64().abs();
+        let mut uk = u.clone();
+        for (k, gk) in g.iter().enumerate().skip(1) {
+            let t = gk.clone() * &uk / (2 * k) as f64;
+            mag += t.to_f64().abs();
+            sum += &t;
+            uk *= &u;
+        }
+        let c = Estimate {
+            err: w.err + 8.0 * eps * mag + series_tail(g, &u),
+            value: sum,
+        };
+        Ok(self.moments.step_constant.get_or_init(|| c).clone())
     }
 
     /// The displacement at (x, t) due to a unit load on `cell` with the given time shape
@@ -394,4 +391,12 @@ impl<T: CachedRules> HalfPlane<T> {
             }
         }
     }
+}
+
+/// A bound of the truncation of the Taylor series of g_zz (coefficients `g`) at u
+/// (<= s_R^2/4): the last term kept, times the geometric factor of terms falling at least like
+/// 4^-k, times 2.
+fn series_tail<T: Real>(g: &[T], u: &T) -> f64 {
+    let last = g.len() - 1;
+    4.0 * g[last].to_f64().abs() * u.to_f64().powi(last as i32)
 }

@@ -103,6 +103,13 @@ impl<T: Real> CosineSeries<T> {
     }
 }
 
+/// The head variables of the odd moments ([`HalfPlane::odd_heads`]): (1 - r, the distance
+/// from the Rayleigh pole, r) for r = v and, behind S, r = w.
+struct OddHeads<T> {
+    v: (T, T, T),
+    w: Option<(T, T, T)>,
+}
+
 #[derive(Clone, Debug)]
 enum XzTerm<T> {
     /// n = 1: Euler substitution, rational in tau.
@@ -172,13 +179,31 @@ impl<T: CachedRules> HalfPlane<T> {
         out
     }
 
-    /// -Int_0^r u P(x)/(lambda x c(x)) dr', x = (1 - u)/lambda.
+    /// -Int_0^r u P(x)/(lambda x c(x)) dr', x = (1 - u)/lambda (the step response, n = 1).
     fn odd_form(&self, p: &[T], lambda: &T) -> EvenRational<T> {
+        let inv = lambda.clone().recip();
+        self.odd_rational(p, lambda, &inv, true)
+    }
+
+    /// The first moment's form (order n = -1): -mu Int_0^r u P(x)/c(x) dr', x = (1 - u)/lambda,
+    /// mu = 1 for the v-terms (lambda = m^2) and m^2 for the w-terms (lambda = 1): with
+    /// sigma^2 = m^2 x, d sigma = -mu r dr/sigma and the factor sigma^-(n + 1) = 1.
+    fn first_moment_form(&self, p: &[T], lambda: &T, mu: &T) -> EvenRational<T> {
+        self.odd_rational(p, lambda, mu, false)
+    }
+
+    /// -scale Int_0^r u P(x)/c(x) dr' (times 1/x when `over_x`: the factor lambda x = 1 - u
+    /// of the step response), x = (1 - u)/lambda, as an even rational function of r.
+    fn odd_rational(&self, p: &[T], lambda: &T, scale: &T, over_x: bool) -> EvenRational<T> {
         let inv = lambda.clone().recip();
         let px = compose_affine(p, &inv, &(-inv.clone()));
         let mut num = vec![lambda.zero()];
-        num.extend(px.into_iter().map(|c| -(c / lambda)));
-        let mut factors = vec![Factor::Unit(inv.clone())];
+        num.extend(px.into_iter().map(|c| -(c * scale)));
+        let mut factors = if over_x {
+            vec![Factor::Unit(inv.clone())]
+        } else {
+            Vec::new()
+        };
         factors.extend(self.cubic_factors(|x| {
             (
                 Cx::real(-inv.clone()),
@@ -190,34 +215,24 @@ impl<T: CachedRules> HalfPlane<T> {
         Rational { num, factors }.head()
     }
 
-    /// The first moment's form (order n = -1): -mu Int_0^r u P(x)/c(x) dr', x = (1 - u)/lambda,
-    /// mu = 1 for the v-terms (lambda = m^2) and m^2 for the w-terms (lambda = 1): with
-    /// sigma^2 = m^2 x, d sigma = -mu r dr/sigma and the factor sigma^-(n + 1) = 1.
-    fn first_moment_form(&self, p: &[T], lambda: &T, mu: &T) -> EvenRational<T> {
-        let inv = lambda.clone().recip();
-        let px = compose_affine(p, &inv, &(-inv.clone()));
-        let mut num = vec![lambda.zero()];
-        num.extend(px.into_iter().map(|c| -(c * mu)));
-        let factors = self.cubic_factors(|x| {
-            (
-                Cx::real(-inv.clone()),
-                (-(x.clone().scale(lambda)))
-                    .add_re(&lambda.one())
-                    .scale(&inv),
-            )
-        });
-        Rational { num, factors }.head()
+    /// The polynomials P(x) of the direct terms (module docs): K^2 = (2 - x)^2 (v-part of zz,
+    /// w-part of xx), 4 (1 - m^2 x) (w-part of zz) and 4 (1 - x) (v-part of xx), ascending.
+    fn direct_polynomials(&self) -> [Vec<T>; 3] {
+        let one = self.m.one();
+        let four = one.lit(4.0);
+        [
+            vec![four.clone(), -four.clone(), one],
+            vec![four.clone(), -(self.m2.clone() * 4.0)],
+            vec![four.clone(), -four],
+        ]
     }
 
     /// The v- and w-parts of the first moment of g_zz at this precision.
     fn first_zz_rationals(&self) -> (EvenRational<T>, EvenRational<T>) {
-        let one = self.m.one();
-        let four = one.lit(4.0);
-        let k2 = vec![four.clone(), -four.clone(), one.clone()];
-        let p_zz_w = vec![four, -(self.m2.clone() * 4.0)];
+        let [k2, p_zz_w, _] = self.direct_polynomials();
         (
-            self.first_moment_form(&k2, &self.m2, &one),
-            self.first_moment_form(&p_zz_w, &one, &self.m2),
+            self.first_moment_form(&k2, &self.m2, &self.m.one()),
+            self.first_moment_form(&p_zz_w, &self.m.one(), &self.m2),
         )
     }
 
@@ -300,10 +315,7 @@ impl<T: CachedRules> HalfPlane<T> {
         Option<EvenRational<T>>,
     ) {
         let one = self.m.one();
-        let four = one.lit(4.0);
-        let k2 = vec![four.clone(), -four.clone(), one.clone()];
-        let p_zz_w = vec![four.clone(), -(self.m2.clone() * 4.0)];
-        let p_xx_v = vec![four.clone(), -four];
+        let [k2, p_zz_w, p_xx_v] = self.direct_polynomials();
         let kappa_w = self.m.clone().powi(1 - n as i32);
         let (zz_v, zz_w, xx_v, xx_w) = if n % 2 == 1 {
             (
@@ -488,6 +500,32 @@ impl<T: CachedRules> HalfPlane<T> {
         self.moments.by_n[n].get_or_init(|| self.build_moment(n))
     }
 
+    /// The head variables of the odd moments at s < 1 (`docs/lamb.md`, section 3): v with
+    /// 1 - v and its distance from the Rayleigh pole, and behind S (s < m) the same for w,
+    /// each formed without cancellation.
+    fn odd_heads(&self, s: &T) -> OddHeads<T> {
+        let one = s.one();
+        let v = ((one.clone() - s) * (one.clone() + s)).sqrt();
+        // s^2 - s_R^2 exactly (up to rounding of the product)
+        let d2 = (s.clone() - &self.s_r) * (s.clone() + &self.s_r);
+        let v_r = (one.clone() - self.s_r.clone().sqr()).sqrt();
+        let v_part = (
+            s.clone().sqr() / (one.clone() + &v),
+            d2.clone() / (v_r + &v),
+            v,
+        );
+        let w_part = (*s < self.m).then(|| {
+            let w = ((self.m.clone() - s) * (self.m.clone() + s)).sqrt() / &self.m;
+            let w_r = (one.clone() - &self.x_r).sqrt();
+            let x = s.clone().sqr() * &self.a;
+            (x / (one + &w), d2 * &self.a / (w_r + &w), w)
+        });
+        OddHeads {
+            v: v_part,
+            w: w_part,
+        }
+    }
+
     /// The Taylor coefficients g_k of g_zz(s) = sum_k g_k u^k, u = s^2, at this precision
     /// (`terms` of them): behind the S arrival g_zz = -(K^2 + 4 v w) v/c(x) with x = u/m^2,
     /// K = 2 - x, v = (1 - u)^(1/2), w = (1 - x)^(1/2), all power series in u; the division by
@@ -496,8 +534,8 @@ impl<T: CachedRules> HalfPlane<T> {
     /// (u/s_R^2)^k.
     fn zz_series_at(&self, terms: usize) -> Vec<T> {
         let one = self.m.one();
-        let a = self.a.clone(); // 1/m^2
-                                // sqrt(1 - u) and sqrt(1 - a u)
+        // a = 1/m^2; v = sqrt(1 - u) and w = sqrt(1 - a u)
+        let a = self.a.clone();
         let mut v = vec![one.clone()];
         for k in 1..terms {
             // (k - 3/2)/k, formed in T from exact integers
@@ -609,17 +647,11 @@ impl<T: CachedRules> HalfPlane<T> {
             });
         }
         let (tv, tw) = self.first_zz_terms();
-        let one = s.one();
-        let v = ((one.clone() - s) * (one.clone() + s)).sqrt();
-        let d2 = (s.clone() - &self.s_r) * (s.clone() + &self.s_r);
-        let v_r = (one.clone() - self.s_r.clone().sqr()).sqrt();
-        let gap = d2.clone() / (v_r + &v);
-        let mut out = tv.eval(&v, None, Some(&gap));
-        if *s < self.m {
-            let w = ((self.m.clone() - s) * (self.m.clone() + s)).sqrt() / &self.m;
-            let w_r = (one - &self.x_r).sqrt();
-            let gap = d2 * &self.a / (w_r + &w);
-            let b = tw.eval(&w, None, Some(&gap));
+        let heads = self.odd_heads(s);
+        let (_, gap, v) = &heads.v;
+        let mut out = tv.eval(v, None, Some(gap));
+        if let Some((_, gap, w)) = &heads.w {
+            let b = tw.eval(w, None, Some(gap));
             out.value += &b.value;
             out.err += b.err;
         }
@@ -685,18 +717,19 @@ impl<T: CachedRules> HalfPlane<T> {
         }
         let t = self.terms(n);
         let one = s.one();
-        let x = s.clone().sqr() * &self.a;
         let v = ((one.clone() - s) * (one.clone() + s)).sqrt();
         // s^2 - s_R^2 exactly (up to rounding of the product), for the distance of each head
         // variable from the Rayleigh pole (docs/lamb.md, section 3)
         let d2 = (s.clone() - &self.s_r) * (s.clone() + &self.s_r);
         let v_r = (one.clone() - self.s_r.clone().sqr()).sqrt();
-        let (mut zz, mut xx) = if n == 1 {
-            let omv = s.clone().sqr() / (one.clone() + &v);
-            let gap = d2.clone() / (v_r.clone() + &v);
+        let heads = (n == 1).then(|| self.odd_heads(s));
+        let (mut zz, mut xx) = if let Some(OddHeads {
+            v: (omv, gap, v), ..
+        }) = &heads
+        {
             (
-                t.zz_v.eval(&v, Some(&omv), Some(&gap)),
-                t.xx_v.eval(&v, Some(&omv), Some(&gap)),
+                t.zz_v.eval(v, Some(omv), Some(gap)),
+                t.xx_v.eval(v, Some(omv), Some(gap)),
             )
         } else if *s == 0.0 {
             (t.zz_v.eval_infinite(s), t.xx_v.eval_infinite(s))
@@ -712,12 +745,14 @@ impl<T: CachedRules> HalfPlane<T> {
         if *s < self.m {
             let w = ((self.m.clone() - s) * (self.m.clone() + s)).sqrt() / &self.m;
             let w_r = (one.clone() - &self.x_r).sqrt();
-            let (a, b) = if n == 1 {
-                let omw = x.clone() / (one.clone() + &w);
-                let gap = d2.clone() * &self.a / (w_r.clone() + &w);
+            let (a, b) = if let Some(OddHeads {
+                w: Some((omw, gap, w)),
+                ..
+            }) = &heads
+            {
                 (
-                    t.zz_w.eval(&w, Some(&omw), Some(&gap)),
-                    t.xx_w.eval(&w, Some(&omw), Some(&gap)),
+                    t.zz_w.eval(w, Some(omw), Some(gap)),
+                    t.xx_w.eval(w, Some(omw), Some(gap)),
                 )
             } else if *s == 0.0 {
                 (t.zz_w.eval_infinite(s), t.xx_w.eval_infinite(s))
