@@ -14,6 +14,7 @@
 pub mod case;
 pub mod error;
 pub(crate) mod history;
+pub(crate) mod linalg;
 pub mod march;
 pub mod profile;
 pub mod striker;

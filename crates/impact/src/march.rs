@@ -8,6 +8,7 @@
 
 use crate::error::{ImpactError, Result};
 use crate::history::HistorySum;
+use crate::linalg::Factor;
 use crate::profile::Profile;
 use crate::striker::Compliance;
 use crate::tables::{ShapeRules, Tables};
@@ -104,83 +105,15 @@ pub struct March<'a> {
     systems: std::cell::RefCell<(f64, Vec<Option<std::rc::Rc<CellSystem>>>)>,
 }
 
-/// The LU factorisation with partial pivoting of a row-major n x n matrix.
-#[derive(Debug)]
-struct Lu {
-    n: usize,
-    /// U on and above the diagonal, the multipliers of L below it.
-    a: Vec<f64>,
-    /// The row swapped into place at each column.
-    piv: Vec<usize>,
-}
-
-impl Lu {
-    /// Factorises `a`; `None` when a pivot vanishes.
-    fn new(mut a: Vec<f64>, n: usize) -> Option<Self> {
-        let mut piv = Vec::with_capacity(n);
-        for c in 0..n {
-            let mut p = c;
-            for i in c + 1..n {
-                if a[i * n + c].abs() > a[p * n + c].abs() {
-                    p = i;
-                }
-            }
-            if !(a[p * n + c].abs() > 0.0) {
-                return None;
-            }
-            if p != c {
-                for j in 0..n {
-                    a.swap(c * n + j, p * n + j);
-                }
-            }
-            piv.push(p);
-            let d = a[c * n + c];
-            for i in c + 1..n {
-                let f = a[i * n + c] / d;
-                a[i * n + c] = f;
-                if f != 0.0 {
-                    for j in c + 1..n {
-                        a[i * n + j] -= f * a[c * n + j];
-                    }
-                }
-            }
-        }
-        Some(Lu { n, a, piv })
-    }
-
-    /// The solution of a x = r; `None` when it is not finite.
-    fn solve(&self, r: &[f64]) -> Option<Vec<f64>> {
-        let (n, a) = (self.n, &self.a);
-        let mut x = r.to_vec();
-        // the rows were swapped whole (multipliers included): all swaps first, then L
-        for (c, &p) in self.piv.iter().enumerate() {
-            x.swap(c, p);
-        }
-        for c in 0..n {
-            let xc = x[c];
-            if xc != 0.0 {
-                for i in c + 1..n {
-                    x[i] -= a[i * n + c] * xc;
-                }
-            }
-        }
-        for i in (0..n).rev() {
-            let mut s = x[i];
-            for j in i + 1..n {
-                s -= a[i * n + j] * x[j];
-            }
-            x[i] = s / a[i * n + i];
-        }
-        x.iter().all(|v| v.is_finite()).then_some(x)
-    }
-}
+/// The banded contact systems kept on either side of the current width.
+const SYSTEMS_KEPT: usize = 4;
 
 /// The step's system of the contact cells 0..c - 1 depends on c alone (the current step's
 /// coefficients and the striker's coupling are the same at every step): its factorisation
 /// and M^-1 u for the column u of cell c, kept for the whole march.
 #[derive(Debug)]
 struct CellSystem {
-    lu: Lu,
+    factor: Factor,
     z: Vec<f64>,
 }
 
@@ -189,7 +122,8 @@ struct CellSystem {
 /// right-hand side and u the edge cell's column. The tied system M + ratio u e^T (e the last
 /// cell) then has the solution y - ratio z (e.y)/(1 + ratio e.z) (Sherman-Morrison), so the
 /// iterations on the edge's position cost O(c) each instead of a factorisation; M's
-/// factorisation and z are the same at every step ([`CellSystem`]), so a step costs O(c^2).
+/// factorisation and z are the same at every step ([`CellSystem`]), so a step costs O(c^2)
+/// when M is dense and O(c) when it is banded (`crate::linalg`).
 struct TiedBasis {
     y: Vec<f64>,
     system: std::rc::Rc<CellSystem>,
@@ -416,6 +350,17 @@ impl<'a> March<'a> {
     /// Time step.
     pub fn dt(&self) -> f64 {
         self.dt
+    }
+
+    /// The half-bandwidth of the current step's coefficients (the kernels are causal: a cell
+    /// loaded over one step reaches the cells within c dt of it, c the fastest wave), `None`
+    /// when the striker's response is not local (a shell).
+    fn reach(&self) -> Option<usize> {
+        let hp = self.tables.reach();
+        match self.striker.as_deref() {
+            Some(s) => s.reach().map(|r| r.max(hp)),
+            None => Some(hp),
+        }
     }
 
     fn weight(&self, j: usize) -> f64 {
@@ -759,21 +704,18 @@ impl<'a> March<'a> {
             }
         }
         let n = c;
-        let mut a = vec![0.0; n * n];
-        let mut u = vec![0.0; n];
-        for i in 0..n {
-            for j in 0..n {
-                a[i * n + j] = self.current(i, j) + d.coupling * self.weight(j);
-            }
-            u[i] = self.current(i, c) + d.coupling * self.weight(c);
-        }
+        let w: Vec<f64> = (0..n).map(|j| self.weight(j)).collect();
+        let u: Vec<f64> = (0..n)
+            .map(|i| self.current(i, c) + d.coupling * self.weight(c))
+            .collect();
         let singular = || ImpactError::Step {
             time: format!("{:.6}", d.t),
             reason: "singular contact system".into(),
         };
-        let lu = Lu::new(a, n).ok_or_else(singular)?;
-        let z = lu.solve(&u).ok_or_else(singular)?;
-        let sys = std::rc::Rc::new(CellSystem { lu, z });
+        let factor = Factor::new(n, self.reach(), |i, j| self.current(i, j), d.coupling, w)
+            .ok_or_else(singular)?;
+        let z = factor.solve(&u).ok_or_else(singular)?;
+        let sys = std::rc::Rc::new(CellSystem { factor, z });
         let mut cache = self.systems.borrow_mut();
         if cache.0 != d.coupling {
             *cache = (d.coupling, Vec::new());
@@ -782,6 +724,15 @@ impl<'a> March<'a> {
             cache.1.resize_with(c + 1, || None);
         }
         cache.1[c] = Some(sys.clone());
+        // banded systems cost O(c) to rebuild: keep only the widths near the current one
+        // (the contact grows or shrinks a cell at a time), so memory stays O(c)
+        if matches!(sys.factor, Factor::Band { .. }) {
+            for (k, slot) in cache.1.iter_mut().enumerate() {
+                if k.abs_diff(c) > SYSTEMS_KEPT {
+                    *slot = None;
+                }
+            }
+        }
         Ok(sys)
     }
 
@@ -792,7 +743,7 @@ impl<'a> March<'a> {
         for (i, ri) in r.iter_mut().enumerate() {
             *ri = d.target(i, 0.0)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(0.0);
         }
-        let y = sys.lu.solve(&r).ok_or_else(|| ImpactError::Step {
+        let y = sys.factor.solve(&r).ok_or_else(|| ImpactError::Step {
             time: format!("{:.6}", d.t),
             reason: "singular contact system".into(),
         })?;
@@ -940,37 +891,6 @@ mod tests {
     }
 
     /// Tables whose rules the march passes to the shape correction.
-    /// The LU factorisation solves a system that needs pivoting (a zero leading entry) to its
-    /// residual's rounding, for several right-hand sides, and refuses a singular matrix.
-    #[test]
-    fn lu_solves_with_pivoting_and_refuses_a_singular_matrix() {
-        let n = 7;
-        let a: Vec<f64> = (0..n * n)
-            .map(|k| {
-                let (i, j) = (k / n, k % n);
-                if i == 0 && j == 0 {
-                    0.0
-                } else {
-                    1.0 / (1.0 + (i as f64 - j as f64).abs()) + ((i * 7 + j * 3) % 5) as f64 * 0.1
-                }
-            })
-            .collect();
-        let lu = Lu::new(a.clone(), n).unwrap();
-        for r in [vec![1.0; n], (0..n).map(|i| i as f64 - 3.0).collect()] {
-            let x = lu.solve(&r).unwrap();
-            for i in 0..n {
-                let ax: f64 = (0..n).map(|j| a[i * n + j] * x[j]).sum();
-                assert!((ax - r[i]).abs() < 1e-12, "row {i}: {ax} vs {}", r[i]);
-            }
-        }
-        // a column of zeros: no pivot
-        let mut sing = a;
-        for i in 0..n {
-            sing[i * n + 3] = 0.0;
-        }
-        assert!(Lu::new(sing, n).is_none());
-    }
-
     fn tables() -> Tables {
         Tables::new(lamb::HalfPlane::from_poisson(0.25).unwrap(), 2.0).unwrap()
     }

@@ -199,6 +199,15 @@ impl Compliance {
         }
     }
 
+    /// The half-bandwidth of the current step's coefficients (the striker's own tables'
+    /// reach); `None` for the shell, whose modes respond everywhere at once.
+    pub(crate) fn reach(&self) -> Option<usize> {
+        match self {
+            Compliance::Elastic { tables, .. } => Some(tables.reach()),
+            Compliance::Shell(_) => None,
+        }
+    }
+
     /// The unscaled row c(., l) and its scale.
     pub(crate) fn row(&self, l: usize) -> (&[f64], f64) {
         match self {

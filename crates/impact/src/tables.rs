@@ -141,11 +141,24 @@ impl Tables {
                     let left = if k == 0 { row[1] } else { row[k - 1] };
                     row[k + 1] - 2.0 * row[k] + left
                 };
-                let v = d2(&self.xi[l + 1]) - d2(&self.xi[l]);
+                // causality: nothing reaches cell k by t_{l+1} when its nearest point is
+                // beyond c1 t_{l+1} (the differences of Xi would leave rounding there)
+                let v = if k as f64 - 1.0 >= (l + 1) as f64 * self.kappa {
+                    0.0
+                } else {
+                    d2(&self.xi[l + 1]) - d2(&self.xi[l])
+                };
                 self.a[l].push(v);
             }
         }
         Ok(())
+    }
+
+    /// The largest k with a(k, 0) not zero: the source cell's load over one step reaches the
+    /// receiver cell k only if the cells' nearest points are closer than c1 dt (k - 1 <
+    /// kappa).
+    pub fn reach(&self) -> usize {
+        self.kappa.ceil() as usize
     }
 
     /// The row a(., l) (dx = 1), available up to the k given to [`Tables::ensure`].
