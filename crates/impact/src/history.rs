@@ -49,6 +49,8 @@ pub(crate) trait KernelRows {
     fn ensure_rows(&mut self, kmax: usize, lmax: usize) -> Result<()>;
     /// The row a(., l) and its scale.
     fn scaled_row(&self, l: usize) -> (&[f64], f64);
+    /// The largest k with a(k, l) possibly not zero (causality), `None` when every k may be.
+    fn reach(&self, l: usize) -> Option<usize>;
 }
 
 impl KernelRows for Tables {
@@ -58,6 +60,9 @@ impl KernelRows for Tables {
     fn scaled_row(&self, l: usize) -> (&[f64], f64) {
         (self.row(l), 1.0)
     }
+    fn reach(&self, l: usize) -> Option<usize> {
+        Some(self.reach_at(l))
+    }
 }
 
 impl KernelRows for Compliance {
@@ -66,6 +71,9 @@ impl KernelRows for Compliance {
     }
     fn scaled_row(&self, l: usize) -> (&[f64], f64) {
         self.row(l)
+    }
+    fn reach(&self, l: usize) -> Option<usize> {
+        self.reach_at(l)
     }
 }
 
@@ -220,18 +228,21 @@ impl HistorySum {
             for s in c - len..c {
                 let (row, f) = kernel.scaled_row(t - s);
                 let f = f * scale;
+                // a source reaches only the cells within the kernel's reach at this lag
+                let r = kernel.reach(t - s).unwrap_or(2 * w).min(2 * w);
                 for (j, &pj) in self.pressures[s].iter().enumerate() {
                     if pj == 0.0 {
                         continue;
                     }
                     let pj = pj * f;
-                    if j == 0 {
-                        for (i, o) in out.iter_mut().enumerate() {
-                            *o += row[i] * pj;
-                        }
-                    } else {
-                        for (i, o) in out.iter_mut().enumerate() {
-                            *o += (row[i.abs_diff(j)] + row[i + j]) * pj;
+                    let near = j.saturating_sub(r)..(j + r + 1).min(w);
+                    for (i, o) in out[near.clone()].iter_mut().enumerate() {
+                        *o += row[(i + near.start).abs_diff(j)] * pj;
+                    }
+                    // the mirror cell -j reaches the cells i with i + j <= r
+                    if j > 0 && j <= r {
+                        for (i, o) in out[..(r + 1 - j).min(w)].iter_mut().enumerate() {
+                            *o += row[i + j] * pj;
                         }
                     }
                 }

@@ -12,6 +12,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod case;
+pub mod edge_fit;
 pub mod error;
 pub(crate) mod history;
 pub(crate) mod linalg;

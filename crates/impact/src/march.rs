@@ -421,7 +421,13 @@ impl<'a> March<'a> {
     /// the current pressures (the striker's 0 when rigid).
     fn displacements(&self, i: usize, hist: &(Vec<f64>, Vec<f64>), p: &[f64]) -> (f64, f64) {
         let (mut a, mut b) = (hist.0[i], hist.1.get(i).copied().unwrap_or(0.0));
-        for (j, v) in p.iter().enumerate() {
+        // the current step's cells reach |i - j| <= reach (the mirror terms i + j <= reach
+        // lie inside that range)
+        let near = match self.reach() {
+            Some(r) => i.saturating_sub(r)..(i + r + 1).min(p.len()),
+            None => 0..p.len(),
+        };
+        for (j, v) in p.iter().enumerate().take(near.end).skip(near.start) {
             let (ca, cb) = self.current_parts(i, j);
             a += ca * v;
             b += cb * v;

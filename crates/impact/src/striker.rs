@@ -202,8 +202,13 @@ impl Compliance {
     /// The half-bandwidth of the current step's coefficients (the striker's own tables'
     /// reach); `None` for the shell, whose modes respond everywhere at once.
     pub(crate) fn reach(&self) -> Option<usize> {
+        self.reach_at(0)
+    }
+
+    /// The reach of the coefficients c(., l) (`Tables::reach_at`); `None` for the shell.
+    pub(crate) fn reach_at(&self, l: usize) -> Option<usize> {
         match self {
-            Compliance::Elastic { tables, .. } => Some(tables.reach()),
+            Compliance::Elastic { tables, .. } => Some(tables.reach_at(l)),
             Compliance::Shell(_) => None,
         }
     }

@@ -158,7 +158,13 @@ impl Tables {
     /// receiver cell k only if the cells' nearest points are closer than c1 dt (k - 1 <
     /// kappa).
     pub fn reach(&self) -> usize {
-        self.kappa.ceil() as usize
+        self.reach_at(0)
+    }
+
+    /// The largest k with a(k, l) not zero: k - 1 < (l + 1) kappa (the P-wave front at the
+    /// end of the lag's step).
+    pub fn reach_at(&self, l: usize) -> usize {
+        ((l + 1) as f64 * self.kappa).ceil() as usize
     }
 
     /// The row a(., l) (dx = 1), available up to the k given to [`Tables::ensure`].

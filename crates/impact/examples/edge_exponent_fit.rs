@@ -1,0 +1,98 @@
+//! The local exponent of the contact pressure at an edge moving at a constant speed, fitted to
+//! the transient solver's pressures over two decades of the distance from the edge, against
+//! `lamb::edge`'s prediction (`docs/impact.md`, section 8).
+//!
+//! A rigid wedge (half-angle 80 deg) driven at constant speed into the half-plane
+//! (nu = 0.25) is self-similar: with the `kinematic` law its edge moves at D = V tan(Theta),
+//! chosen in each speed range; with the `signorini` law at the free edge's own speed. The
+//! pressures of the last 30 percent of the steps, in the edge's scale s = d/b, are fitted by
+//! s^lambda (c_0 + c_1 s + c_2 s^2 + c_3 s^3) on s = d/b from 0.005 to 0.5 (b = R at the end,
+//! the four cells next to the edge left out; `impact::edge_fit`).
+//!
+//! `cargo run --release -p impact --example edge_exponent_fit -- [cells [case]]` (b at the end
+//! in cells, default 800; one case of the list by its index).
+use impact::edge_fit::fit_edge_exponent;
+use impact::{Drive, EdgeLaw, ImpactCase, Profile};
+use lamb::HalfPlane;
+
+/// The fit's upper end s = d/b (the wedge's pressure has a logarithmic peak at its apex, s = 1).
+const HI: f64 = 0.5;
+/// The cells next to the edge left out of the fit.
+const MIN_CELLS: f64 = 4.0;
+
+fn main() {
+    let cells: f64 = std::env::args()
+        .nth(1)
+        .map(|a| a.parse().expect("cells: a number"))
+        .unwrap_or(800.0);
+    let nu = 0.25;
+    let theta: f64 = 80.0;
+    let hp = HalfPlane::from_poisson(nu).expect("nu");
+    // an optional second argument runs one case (its index in the list)
+    let only: Option<usize> = std::env::args()
+        .nth(2)
+        .map(|a| a.parse().expect("case index: a number"));
+    let cases = [
+        (EdgeLaw::Kinematic, 0.3),
+        (EdgeLaw::Kinematic, 0.555),
+        (EdgeLaw::Kinematic, 0.97),
+        (EdgeLaw::Kinematic, 1.5),
+        (EdgeLaw::Signorini, 0.3),
+    ];
+    println!("law        D/c1    range            predicted  fitted     error     bins  seconds");
+    for (ci, (law, d)) in cases.into_iter().enumerate() {
+        if only.is_some_and(|o| o != ci) {
+            continue;
+        }
+        let v = d / theta.to_radians().tan();
+        // the end time that takes the edge to b = R (the free edge's speed from a coarse run)
+        let mut case = ImpactCase::new(
+            nu,
+            Profile::Wedge { theta_deg: theta },
+            Drive::Speed(v),
+            law,
+            1.0 / d,
+        );
+        case.levels = 1;
+        if law == EdgeLaw::Signorini {
+            case.dx = 0.02;
+            let coarse = case.solve(|_| {}).expect("the coarse case solves");
+            let last = coarse.runs[0].steps.last().expect("steps");
+            case.end = last.t / last.b;
+        }
+        case.dx = 1.0 / cells;
+        let t0 = std::time::Instant::now();
+        let sol = case.solve(|_| {}).expect("the case solves");
+        let secs = t0.elapsed().as_secs_f64();
+        let run = &sol.runs[0];
+        let last = run.steps.last().expect("steps");
+        // the edge's actual speed (the free edge's own): b over the last 30 percent
+        let t_from = 0.7 * last.t;
+        let first = run.steps.iter().find(|s| s.t >= t_from).expect("steps");
+        let speed = (last.b - first.b) / (last.t - first.t);
+        let e = hp.edge_behaviour(speed, law).expect("edge speed");
+        let samples = run.edge_samples(t_from, MIN_CELLS);
+        let bracket = (e.selected - 0.45, e.selected + 0.45);
+        let fit = fit_edge_exponent(&samples, (HI / 100.0, HI), bracket, 3, 40);
+        match fit {
+            Ok(f) => println!(
+                "{:<10} {:.4}  {:<15}  {:+.4}    {:+.4}    {:+.1e}  {:>4}  {:.1}",
+                law.name(),
+                speed,
+                e.range.name(),
+                e.selected,
+                f.lambda,
+                f.lambda - e.selected,
+                f.bins,
+                secs
+            ),
+            Err(err) => println!(
+                "{:<10} {:.4}  {:<15}  {:+.4}    no fit: {err}",
+                law.name(),
+                speed,
+                e.range.name(),
+                e.selected
+            ),
+        }
+    }
+}
