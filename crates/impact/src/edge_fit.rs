@@ -27,6 +27,8 @@ pub struct ExponentFit {
     pub rms: f64,
     /// The bins that held samples.
     pub bins: usize,
+    /// The smallest and the largest mean s of those bins: the range actually fitted.
+    pub s_range: (f64, f64),
 }
 
 impl Run {
@@ -186,6 +188,7 @@ pub fn fit_edge_exponent(
         coefficients,
         rms: (res / pts.len() as f64).sqrt(),
         bins: pts.len(),
+        s_range: (pts[0].0, pts[pts.len() - 1].0),
     })
 }
 
