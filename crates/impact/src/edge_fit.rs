@@ -12,9 +12,31 @@
 //! weight: a fit on a log scale), with lambda searched in a bracket narrower than one so that
 //! the two exponents of one speed are not confused.
 
-use crate::case::Run;
+use lamb::edge::{EdgeBehaviour, SpeedRange};
+use lamb::HalfPlane;
+
+use crate::case::{Run, Solution};
 use crate::error::{invalid, ImpactError, Result};
 use crate::linalg::Lu;
+
+/// The fit's upper end in s = d/b for a driven wedge (its pressure has a logarithmic peak at
+/// the apex, s = 1).
+const WEDGE_FIT_END: f64 = 0.5;
+/// The cells next to the edge left out of the fit (at least; a fast edge leaves out the cells
+/// it crosses in two steps).
+const EDGE_CELLS_LEFT_OUT: f64 = 4.0;
+/// The share of the steps, at the end of the run, whose pressures are fitted.
+const LATE_SHARE: f64 = 0.3;
+
+/// The predicted local behaviour at a self-similar run's edge and the exponent fitted to the
+/// run's pressures.
+#[derive(Clone, Debug)]
+pub struct EdgeExponentCheck {
+    /// `lamb::edge`'s local behaviour for the edge's measured speed and the run's law.
+    pub behaviour: EdgeBehaviour,
+    /// The fit.
+    pub fit: ExponentFit,
+}
 
 /// The fitted local law p = s^lambda (c_0 + c_1 s + ... ), s = d/b.
 #[derive(Clone, Debug)]
@@ -29,6 +51,52 @@ pub struct ExponentFit {
     pub bins: usize,
     /// The smallest and the largest mean s of those bins: the range actually fitted.
     pub s_range: (f64, f64),
+}
+
+/// The edge exponent of a self-similar solution (a wedge driven at constant speed, whose
+/// pressure is a function of x/t) fitted to its finest grid's pressures, against the
+/// prediction of `lamb::edge` for the edge's speed over the last 30 percent of the run
+/// (`docs/impact.md`, section 8). The fit takes two decades of s = d/b up to s = 0.5, or up
+/// to 80 percent of the way to the nearest wave front from the first contact (s = 1 - c/D,
+/// c the fastest of c1, c2, c_R below D) when that is nearer; the cells next to the edge are
+/// left out (at least four, and the cells the edge crosses in two steps). Errors: a run too
+/// short or too coarse for the fit, an edge speed at a range boundary, a failed fit.
+pub fn fit_self_similar_edge(sol: &Solution) -> Result<EdgeExponentCheck> {
+    let run = &sol.runs[0];
+    let too_short = || ImpactError::Grid {
+        name: "end",
+        reason: "too few steps for the edge exponent fit".into(),
+    };
+    let last = run.steps.last().ok_or_else(too_short)?;
+    let t_from = (1.0 - LATE_SHARE) * last.t;
+    let first = run
+        .steps
+        .iter()
+        .find(|s| s.t >= t_from)
+        .filter(|s| s.t < last.t)
+        .ok_or_else(too_short)?;
+    let speed = (last.b - first.b) / (last.t - first.t);
+    let behaviour = HalfPlane::new(sol.m)?.edge_behaviour(speed, sol.case.law)?;
+    let front = match behaviour.range {
+        SpeedRange::SubRayleigh => None,
+        SpeedRange::RayleighShear => Some(sol.s_r),
+        SpeedRange::Transonic => Some(sol.m),
+        SpeedRange::Supersonic => Some(1.0),
+    };
+    let hi = front.map_or(WEDGE_FIT_END, |c| {
+        WEDGE_FIT_END.min(0.8 * (1.0 - c / speed))
+    });
+    let min_cells = EDGE_CELLS_LEFT_OUT.max(2.0 * speed * sol.case.kappa);
+    let samples = run.edge_samples(t_from, min_cells);
+    let lambda = behaviour.selected;
+    let fit = fit_edge_exponent(
+        &samples,
+        (hi / 100.0, hi),
+        (lambda - 0.45, lambda + 0.45),
+        3,
+        40,
+    )?;
+    Ok(EdgeExponentCheck { behaviour, fit })
 }
 
 impl Run {
