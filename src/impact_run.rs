@@ -496,8 +496,13 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
                     "invalid --pressure-at time {t}: admissible range is (0, end]"
                 ));
             }
-            if let Some((ts, x, p)) = sol.pressure_at(t) {
-                list.push(json!({"c1t_over_R": ts, "x_over_R": x, "p_over_rho_c1sq": p}));
+            if let Some(prof) = sol.pressure_profile(t) {
+                list.push(json!({
+                    "c1t_over_R": prof.t,
+                    "x_over_R": prof.x,
+                    "p_over_rho_c1sq": prof.p,
+                    "error_estimate": prof.err,
+                }));
             }
         }
         out.insert("pressure".into(), Value::Array(list));
@@ -568,13 +573,14 @@ pub fn csv(v: &Value, cmdline: &str) -> String {
     if let Some(list) = v["pressure"].as_array() {
         for p in list {
             s.push_str(&format!(
-                "# pressure at c1t/R = {}\nx_over_R,p_over_rho_c1sq\n",
+                "# pressure at c1t/R = {}\nx_over_R,p_over_rho_c1sq,error_estimate\n",
                 p["c1t_over_R"]
             ));
             let xs = p["x_over_R"].as_array().cloned().unwrap_or_default();
             let ps = p["p_over_rho_c1sq"].as_array().cloned().unwrap_or_default();
-            for (x, q) in xs.iter().zip(&ps) {
-                s.push_str(&format!("{x},{q}\n"));
+            for (i, (x, q)) in xs.iter().zip(&ps).enumerate() {
+                let e = field(&p["error_estimate"][i]);
+                s.push_str(&format!("{x},{q},{e}\n"));
             }
         }
     }

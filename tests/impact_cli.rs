@@ -253,7 +253,7 @@ fn run_driven_flat_punch_gives_the_plane_wave_pressure() {
         "--dx",
         "0.0125",
         "--levels",
-        "1",
+        "2",
         "--pressure-at",
         "c1t/R=0.2",
         "--json",
@@ -262,6 +262,12 @@ fn run_driven_flat_punch_gives_the_plane_wave_pressure() {
     let p = &v["pressure"][0]["p_over_rho_c1sq"];
     // the centre is far from both edges: rho c1 V exactly
     assert!((num(&p[0]) / 0.01 - 1.0).abs() < 1e-10);
+    // every cell carries its error estimate, from the second grid: near zero where the
+    // pressure is the exact plane wave on both grids
+    let e = v["pressure"][0]["error_estimate"].as_array().unwrap();
+    assert_eq!(e.len(), p.as_array().unwrap().len());
+    assert!(e.iter().all(|x| num(x) >= 0.0 && num(x).is_finite()));
+    assert!(num(&e[0]) < 1e-10, "{}", e[0]);
 }
 
 #[test]

@@ -399,6 +399,38 @@ impl Run {
     }
 }
 
+/// A pressure profile of the finest grid ([`Solution::pressure_profile`]).
+#[derive(Clone, Debug)]
+pub struct PressureProfile {
+    /// c1 t/R (the middle of the step).
+    pub t: f64,
+    /// The cell centres x/R.
+    pub x: Vec<f64>,
+    /// The cells' mean pressures p/(rho c1^2).
+    pub p: Vec<f64>,
+    /// Their error estimates (`None` with a single grid).
+    pub err: Option<Vec<f64>>,
+}
+
+/// The mean pressures over the cells of a grid `ratio` times coarser (`ratio` even; the
+/// coarse cell k spans [(k ratio - ratio/2) dx, (k ratio + ratio/2) dx], so the fine cells at
+/// its two ends count half), from the fine cells' means `p` (cell j spanning
+/// [(j - 1/2) dx, (j + 1/2) dx], cell 0 centred on the axis, the profile even).
+pub fn coarse_means(p: &[f64], ratio: usize) -> Vec<f64> {
+    let half = ratio / 2;
+    // the even extension p_-j = p_j, and nothing beyond the given cells
+    let at = |j: i64| p.get(j.unsigned_abs() as usize).copied().unwrap_or(0.0);
+    let n = p.len().div_ceil(half) / 2 + 1;
+    (0..n)
+        .map(|k| {
+            let c = (k * ratio) as i64;
+            let h = half as i64;
+            let inner: f64 = (c - h + 1..c + h).map(at).sum();
+            (inner + 0.5 * (at(c - h) + at(c + h))) / ratio as f64
+        })
+        .collect()
+}
+
 /// The edge's speed range.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage {
@@ -668,13 +700,64 @@ impl Solution {
     /// c1 t/R = `t` (a step's pressures stand for the middle of the step, `docs/impact.md`,
     /// section 3): (that time, the cell centres x/R, the pressures).
     pub fn pressure_at(&self, t: f64) -> Option<(f64, Vec<f64>, Vec<f64>)> {
+        self.pressure_profile(t).map(|p| (p.t, p.x, p.p))
+    }
+
+    /// The pressure profile of [`Solution::pressure_at`] with an error estimate per cell
+    /// (`docs/impact.md`, section 5), from the next coarser grid (none with one level). The
+    /// finest grid's two steps that make up the coarser grid's step (the same middle time)
+    /// are averaged and taken to the coarser cells ([`coarse_means`]); e_j is four times the
+    /// largest difference |coarse - fine| over the coarser cells within one cell of cell j,
+    /// plus what that comparison cannot see: the cell's second difference
+    /// |p_j - (p_{j-1} + p_{j+1})/2| (a cell-to-cell oscillation, which the coarser cells
+    /// average out) and its difference from the two steps' mean (a step-to-step one).
+    pub fn pressure_profile(&self, t: f64) -> Option<PressureProfile> {
         let fine = &self.runs[0];
         let n = ((t / fine.dt + 0.5).round() as usize).clamp(1, fine.steps.len());
         let st = fine.steps.get(n - 1)?;
         let m2 = self.m * self.m;
         let x = (0..st.pressure.len()).map(|j| j as f64 * fine.dx).collect();
-        let p = st.pressure.iter().map(|v| v * m2).collect();
-        Some((st.t - 0.5 * fine.dt, x, p))
+        let p: Vec<f64> = st.pressure.iter().map(|v| v * m2).collect();
+        let err = self.runs.get(1).and_then(|coarse| {
+            // the coarse step m spans the fine steps 2m - 1 and 2m (at the end of a run with
+            // an odd number of fine steps, the last whole pair: the difference of
+            // step n from that pair then holds the change over one step)
+            let m = n
+                .div_ceil(2)
+                .min(coarse.steps.len())
+                .min(fine.steps.len() / 2);
+            let cs = coarse.step(m)?;
+            let (a, b) = (fine.step(2 * m - 1)?, fine.step(2 * m)?);
+            let len = a.pressure.len().max(b.pressure.len()).max(p.len());
+            let at = |v: &[f64], j: usize| v.get(j).copied().unwrap_or(0.0);
+            let pair: Vec<f64> = (0..len)
+                .map(|j| 0.5 * (at(&a.pressure, j) + at(&b.pressure, j)))
+                .collect();
+            let agg = coarse_means(&pair, 2);
+            let nc = agg.len().max(cs.pressure.len());
+            let diff: Vec<f64> = (0..nc)
+                .map(|k| (at(&cs.pressure, k) - at(&agg, k)).abs() * m2)
+                .collect();
+            Some(
+                (0..p.len())
+                    .map(|j| {
+                        // the coarse cells overlapping fine cell j, and their neighbours
+                        let lo = (j / 2).saturating_sub(1);
+                        let hi = (j.div_ceil(2) + 1).min(nc - 1);
+                        let d = diff[lo..=hi].iter().fold(0.0, |a: f64, v| a.max(*v));
+                        let left = if j == 0 { at(&p, 1) } else { p[j - 1] };
+                        let rough = (p[j] - 0.5 * (left + at(&p, j + 1))).abs();
+                        4.0 * d + rough + (p[j] - pair[j] * m2).abs()
+                    })
+                    .collect(),
+            )
+        });
+        Some(PressureProfile {
+            t: st.t - 0.5 * fine.dt,
+            x,
+            p,
+            err,
+        })
     }
 
     /// The shell striker's strain and vibration kinetic energy over rho c1^2 R^2 after each

@@ -21,7 +21,10 @@ pub mod profile;
 pub mod striker;
 pub mod tables;
 
-pub use case::{Drive, HistoryRow, ImpactCase, ReferenceCase, Solution, Stage, Value, REFERENCE};
+pub use case::{
+    coarse_means, Drive, HistoryRow, ImpactCase, PressureProfile, ReferenceCase, Solution, Stage,
+    Value, REFERENCE,
+};
 pub use error::{ImpactError, Result};
 pub use march::EdgeLaw;
 pub use profile::Profile;

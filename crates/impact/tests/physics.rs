@@ -396,3 +396,72 @@ fn supersonic_start_next_term_is_k3() {
     let other = slope_error(0.2, 0.0005);
     assert!(other.abs() < 0.1, "nu = 0.2: slope over 2 K3 - 1: {other}");
 }
+
+/// The pressure profiles' error estimates (from the next coarser grid) cover the actual
+/// error of the finest grid's cell means, measured against a grid four times finer in space
+/// and time (its cell means over the same cells, its steps over the same step): the free
+/// cylinder through its force peak, and a wedge driven with a prescribed sub-Rayleigh edge,
+/// whose pressure is singular there.
+#[test]
+fn pressure_profile_estimates_cover_a_finer_grid() {
+    let wedge = |dx: f64, levels: usize| {
+        let v = 0.3 / 80f64.to_radians().tan();
+        let mut c = ImpactCase::new(
+            0.25,
+            Profile::Wedge { theta_deg: 80.0 },
+            Drive::Speed(v),
+            EdgeLaw::Kinematic,
+            1.5,
+        );
+        c.dx = dx;
+        c.levels = levels;
+        c
+    };
+    let cylinder = |dx: f64, levels: usize| {
+        let mut c = free_parabola(0.25, 10.0, 0.01, 7.0, dx);
+        c.levels = levels;
+        c
+    };
+    type Setup = fn(f64, usize) -> ImpactCase;
+    let cases: [(&str, Setup, f64, &[f64]); 2] = [
+        ("cylinder", cylinder, 0.01, &[1.0, 3.0, 6.8]),
+        ("wedge", wedge, 0.01, &[0.5, 1.5]),
+    ];
+    for (name, setup, dx, times) in cases {
+        let sol = setup(dx, 3).solve(|_| {}).unwrap();
+        let truth = setup(dx / 4.0, 1).solve(|_| {}).unwrap();
+        let tr = &truth.runs[0];
+        let mut worst: f64 = 0.0;
+        for &t in times {
+            let prof = sol.pressure_profile(t).unwrap();
+            let err = prof.err.as_ref().expect("three levels give estimates");
+            // the four steps of the finer grid that make up the step of the profile
+            let n = ((prof.t / sol.runs[0].dt) + 0.5).round() as usize;
+            let steps: Vec<&Vec<f64>> = (4 * n - 3..=4 * n)
+                .map(|k| &tr.step(k).unwrap().pressure)
+                .collect();
+            let len = steps.iter().map(|p| p.len()).max().unwrap();
+            let mean: Vec<f64> = (0..len)
+                .map(|j| {
+                    steps
+                        .iter()
+                        .map(|p| p.get(j).copied().unwrap_or(0.0))
+                        .sum::<f64>()
+                        / 4.0
+                })
+                .collect();
+            let reference = impact::coarse_means(&mean, 4);
+            for (j, (p, e)) in prof.p.iter().zip(err).enumerate() {
+                let r = reference.get(j).copied().unwrap_or(0.0);
+                let actual = (p - r * truth.m * truth.m).abs();
+                worst = worst.max(actual / e);
+                assert!(
+                    actual <= *e,
+                    "{name}, c1 t/R = {t}, cell {j} of {}: error {actual:.3e} against stated {e:.3e} (p = {p:.5})",
+                    prof.p.len()
+                );
+            }
+        }
+        eprintln!("{name}: largest actual/stated {worst:.3}");
+    }
+}
