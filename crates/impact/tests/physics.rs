@@ -222,9 +222,9 @@ fn slow_free_edge_follows_hertz() {
     assert!(errors[1].abs() < 1.2e-3, "b against Hertz: {errors:?}");
 }
 
-/// Convergence: the observed order of h and R is about one (the method's order: pressure
-/// constant per cell and step), and halving the cells changes h, R by less than the error
-/// estimate stated on the coarser grid.
+/// Convergence: the observed order of h, R and b is about one or more (the method's order:
+/// pressure constant per cell and step), and halving the cells changes h, R and b by less than
+/// the error estimate stated on the coarser grid.
 #[test]
 fn refinement_converges_within_the_stated_errors() {
     let solve = |dx: f64| {
@@ -235,14 +235,14 @@ fn refinement_converges_within_the_stated_errors() {
     let fine = solve(0.005);
     let (rc, oc) = coarse.history();
     let (rf, _) = fine.history();
-    for o in [oc.h, oc.force] {
+    for (name, o) in [("h", oc.h), ("force", oc.force), ("b", oc.b)] {
         let o = o.expect("three levels give an order");
-        assert!(o > 0.7 && o < 3.0, "observed order {o}");
+        assert!(o > 0.7 && o < 3.0, "observed order of {name}: {o}");
     }
     let mut checked = 0;
     for r in &rc {
         if let Some(f) = rf.iter().find(|x| (x.t - r.t).abs() < 1e-9) {
-            for (c, fv) in [(r.h, f.h), (r.force, f.force)] {
+            for (c, fv) in [(r.h, f.h), (r.force, f.force), (r.b, f.b)] {
                 let err = c.err.unwrap();
                 assert!(
                     (c.value - fv.value).abs() <= err + 1e-14,
