@@ -61,6 +61,11 @@ pub struct RunArgs {
     /// Refinement levels for the error estimates (1 to 4).
     #[arg(long, default_value_t = 3)]
     levels: usize,
+    /// The edge cell: `model` (the local behaviour of the pressure at a moving edge, the
+    /// edge inside its cell) or `whole` (whole cells, the edge captured cell by cell), for
+    /// comparing the two.
+    #[arg(long, default_value = "model")]
+    edge_cell: String,
     /// Pressure profiles at these times: c1t/R=T1,T2,...
     #[arg(long)]
     pressure_at: Option<String>,
@@ -359,6 +364,15 @@ pub fn case(a: &RunArgs) -> R<ImpactCase> {
     c.dx = a.dx;
     c.kappa = a.kappa;
     c.levels = a.levels;
+    c.edge_model = match a.edge_cell.as_str() {
+        "model" => true,
+        "whole" => false,
+        other => {
+            return Err(format!(
+                "invalid --edge-cell {other}: admissible values are model, whole"
+            ))
+        }
+    };
     Ok(c)
 }
 
@@ -406,7 +420,13 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
     out.insert("cR_over_c1".into(), json!(sol.s_r));
     out.insert(
         "grid".into(),
-        json!({"dx_over_R": sol.runs[0].dx, "c1dt_over_R": sol.runs[0].dt, "kappa": sol.case.kappa, "levels": sol.runs.len()}),
+        json!({
+            "dx_over_R": sol.runs[0].dx,
+            "c1dt_over_R": sol.runs[0].dt,
+            "kappa": sol.case.kappa,
+            "levels": sol.runs.len(),
+            "edge_cell": if sol.case.edge_model { "model" } else { "whole" },
+        }),
     );
     let mut errs = Map::new();
     let mut col = |key: &str, vals: Vec<(Value, Value)>| {

@@ -203,6 +203,13 @@ fn run_reports_histories_with_their_errors() {
     ]);
     let v = json(&args);
     assert_eq!(v["law"], "signorini");
+    assert_eq!(v["grid"]["edge_cell"], "model");
+    // whole cells instead: labelled, and another edge
+    let mut whole = args.clone();
+    whole.extend(["--edge-cell", "whole"]);
+    let w = json(&whole);
+    assert_eq!(w["grid"]["edge_cell"], "whole");
+    assert_ne!(w["b_over_R"], v["b_over_R"]);
     let n = v["c1t_over_R"].as_array().unwrap().len();
     assert!(n >= 4);
     for key in [
@@ -281,6 +288,7 @@ fn run_refuses_bad_input_with_one_line() {
             "contradictory",
         ),
         (vec!["--end", "t=1"], "--end"),
+        (vec!["--end", "c1t/R=1", "--edge-cell", "half"], "--edge-cell"),
     ];
     for (extra, word) in cases {
         let mut args: Vec<&str> = RUN_BASE.to_vec();
