@@ -154,6 +154,7 @@ fn every_figure_writes_csv_png_svg_with_metadata() {
         "impact_strikers",
         "impact_history",
         "impact_pressure",
+        "impact_accuracy",
     ] {
         let csv = Csv::read(&d.join(format!("{name}.csv")));
         assert_eq!(
@@ -728,6 +729,7 @@ fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
         ("field_snapshot", None),
         ("error_vs_time", None),
         ("impact_strikers", Some((1600, 1200))),
+        ("impact_accuracy", Some((1100, 750))),
         ("edge_exponents", Some((1600, 1200))),
         ("impact_history", Some((1600, 1200))),
         ("impact_pressure", Some((1600, 700))),
@@ -925,4 +927,30 @@ fn impact_history_and_pressure_match_the_library() {
         }
     }
     assert!(checked > 10, "{checked} times compared");
+}
+
+/// impact_accuracy: for each quantity the stated error bounds the actual one (against the
+/// grid four times finer), and both fall as the grids are refined.
+#[test]
+fn impact_accuracy_states_bounds_and_converges() {
+    let csv = Csv::read(&quick_all().join("impact_accuracy.csv"));
+    for q in ["h", "b", "force"] {
+        let rows: Vec<&HashMap<String, String>> = csv
+            .rows
+            .iter()
+            .filter(|r| text(r, "quantity") == q)
+            .collect();
+        assert_eq!(rows.len(), 2, "{q}: one row per cell width in quick mode");
+        for r in &rows {
+            let (a, s) = (num(r, "actual_error"), num(r, "stated_error"));
+            assert!(a > 0.0 && a <= s, "{q}: actual {a} against stated {s}");
+        }
+        // rows by decreasing dx: the finer grids cost more and err less
+        assert!(num(rows[1], "dx_over_R") < num(rows[0], "dx_over_R"));
+        assert!(num(rows[1], "seconds") > num(rows[0], "seconds"));
+        assert!(
+            num(rows[1], "actual_error") < num(rows[0], "actual_error"),
+            "{q}"
+        );
+    }
 }

@@ -288,7 +288,10 @@ fn run_refuses_bad_input_with_one_line() {
             "contradictory",
         ),
         (vec!["--end", "t=1"], "--end"),
-        (vec!["--end", "c1t/R=1", "--edge-cell", "half"], "--edge-cell"),
+        (
+            vec!["--end", "c1t/R=1", "--edge-cell", "half"],
+            "--edge-cell",
+        ),
     ];
     for (extra, word) in cases {
         let mut args: Vec<&str> = RUN_BASE.to_vec();

@@ -100,6 +100,11 @@ const FIGURES: &[Entry] = &[
         draw: figures::edge_exponents::edge_exponents,
     },
     Entry {
+        name: "impact_accuracy",
+        about: "reference impact case: error of h, b and the force (actual and stated, over the peak) against the run time of three grids",
+        draw: figures::impact_accuracy::impact_accuracy,
+    },
+    Entry {
         name: "impact_strikers",
         about: "rigid, elastic and thin-shell strikers of equal mass and impact speed: h, force, b and the striker's energy against c1 t/R",
         draw: figures::impact_strikers::impact_strikers,
@@ -119,7 +124,7 @@ const FIGURES: &[Entry] = &[
 struct Cli {
     /// Figures to draw (default: all). Names: fig3 fig4 fig5 fig6 fig7 regime_map
     /// field_snapshot error_vs_time impact_history impact_pressure edge_exponents
-    /// impact_strikers.
+    /// impact_accuracy impact_strikers.
     names: Vec<String>,
     /// Output directory (created if missing).
     #[arg(long, default_value = "figures")]

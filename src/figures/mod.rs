@@ -12,6 +12,7 @@ pub mod contour;
 pub mod edge_exponents;
 pub mod error_vs_time;
 pub mod field_snapshot;
+pub mod impact_accuracy;
 pub mod impact_history;
 pub mod impact_strikers;
 pub mod output;
