@@ -49,12 +49,16 @@ pub fn impact_accuracy(ctx: &Ctx) -> Result<Summary> {
     ctx.plan(cells.len() + 1);
     let (truth, _) = solve(1.0 / (4.0 * finest), 1)?;
     ctx.tick();
-    let peak = |pick: Pick| {
-        truth
-            .iter()
-            .map(|r| pick(r).value.abs())
-            .fold(0.0, f64::max)
-    };
+    // each quantity's peak over the reference run, the errors' scale
+    let peaks: Vec<f64> = QUANTITIES
+        .iter()
+        .map(|(_, pick)| {
+            truth
+                .iter()
+                .map(|r| pick(r).value.abs())
+                .fold(0.0, f64::max)
+        })
+        .collect();
     let mut table = Table::new(
         "impact_accuracy",
         "accuracy of h, b and the force against run time (reference case, three grids per point)",
@@ -82,8 +86,7 @@ pub fn impact_accuracy(ctx: &Ctx) -> Result<Summary> {
         let dx = 1.0 / n;
         let (rows, secs) = solve(dx, 3)?;
         ctx.tick();
-        for (q, (name, pick)) in QUANTITIES.iter().enumerate() {
-            let scale = peak(*pick);
+        for (q, ((name, pick), scale)) in QUANTITIES.iter().zip(&peaks).enumerate() {
             let (mut actual, mut stated) = (0.0f64, 0.0f64);
             for r in rows.iter().filter(|r| r.t >= FROM) {
                 let Some(t) = truth.iter().find(|x| (x.t - r.t).abs() < 1e-9) else {

@@ -399,6 +399,11 @@ impl Run {
     }
 }
 
+/// The safety factor on the grids' differences in every error estimate of a history and a
+/// pressure profile (`docs/impact.md`, section 5): the contact set moves cell by cell, so the
+/// error is not smooth in dx.
+const ESTIMATE_SAFETY: f64 = 4.0;
+
 /// A pressure profile of the finest grid ([`Solution::pressure_profile`]).
 #[derive(Clone, Debug)]
 pub struct PressureProfile {
@@ -623,8 +628,7 @@ impl Solution {
                 .filter(|p| *p > 0.0)
                 .map(|p| (1.0 / (2f64.powf(p) - 1.0)).max(1.0))
                 .unwrap_or(1.0);
-            // safety factor 4: the contact set moves cell by cell, the error is not smooth
-            Some(4.0 * d * factor)
+            Some(ESTIMATE_SAFETY * d * factor)
         };
         let mut rows = Vec::with_capacity(times.len());
         for (i, &t) in times.iter().enumerate() {
@@ -747,7 +751,7 @@ impl Solution {
                         let d = diff[lo..=hi].iter().fold(0.0, |a: f64, v| a.max(*v));
                         let left = if j == 0 { at(&p, 1) } else { p[j - 1] };
                         let rough = (p[j] - 0.5 * (left + at(&p, j + 1))).abs();
-                        4.0 * d + rough + (p[j] - pair[j] * m2).abs()
+                        ESTIMATE_SAFETY * d + rough + (p[j] - pair[j] * m2).abs()
                     })
                     .collect(),
             )

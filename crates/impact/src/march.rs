@@ -122,12 +122,16 @@ const ROWS_CORRECTED: usize = 1;
 const SYSTEMS_KEPT: usize = 4;
 
 /// The step's system of the contact cells 0..c - 1 depends on c alone (the current step's
-/// coefficients and the striker's coupling are the same at every step): its factorisation
-/// and M^-1 u for the column u of cell c, kept for the whole march.
+/// coefficients and the striker's coupling are the same at every step): its factorisation,
+/// M^-1 u for the column u of cell c and M^-1 e_{c-k} for the corrected cells behind it, kept
+/// for the whole march.
 #[derive(Debug)]
 struct CellSystem {
     factor: Factor,
     z: Vec<f64>,
+    /// M^-1 e_{c-k}, k = 1 ..= `ROWS_CORRECTED`: the columns of the shape corrections of the
+    /// cells behind the edge cell.
+    behind: Vec<Vec<f64>>,
 }
 
 /// The two solutions behind every tied solve of one step and edge cell c: y = M^-1 r and
@@ -161,6 +165,14 @@ struct EdgeModel {
     /// (units mu = 1), for the shape correction of the free edge's condition; scaled like the
     /// gap for a striker of the half-plane's own wave speeds (the two bodies' compliances add).
     static_factor: f64,
+}
+
+/// The error of a step whose contact system is singular (or gives a non-finite solution).
+fn singular_system(t: f64) -> ImpactError {
+    ImpactError::Step {
+        time: format!("{t:.6}"),
+        reason: "singular contact system".into(),
+    }
 }
 
 /// A step's contact: (last contact cell, edge, cell pressures, force).
@@ -234,32 +246,34 @@ impl EdgeModel {
     /// leave there: the model's gap less the shape correction of the c + 1 cells 0..=c
     /// (`docs/impact.md`, section 4; the correction only for a free edge, given its rules).
     fn tie(&self, theta: f64, dx: f64, c: usize, shape: Option<ShapeRules>) -> (f64, f64) {
-        let inside = theta * dx;
         let outside = (1.0 - theta) * dx;
-        let neighbour = self.mean_power(inside, inside + dx, dx);
-        let load = self.mean_power(0.0, inside, dx);
+        let neighbour = self.neighbour_mean(theta, dx);
+        let load = self.mean_power(0.0, theta * dx, dx);
         let e = self.lambda + 2.0;
         let mut gap = self.gap * pow(outside, e) / (e * dx);
         if let Some(rules) = shape {
-            gap -= self.static_factor
-                * pow(dx, self.lambda + 1.0)
-                * self.shape_defect(theta, c, rules);
+            gap -= self.shape_term(theta, dx, c, 0, rules);
         }
         (load / neighbour, gap / neighbour)
     }
 
-    /// The shape defect (`docs/impact.md`, section 4), dx = 1: with d the distance from the
-    /// edge into the contact, the edge cell d in [theta - 1, theta] and its neighbours
-    /// j = 1..=cells behind it, the mean over the edge cell of
-    /// -Int (p - pbar) ln|d - xi| dxi for p = d^lambda (d > 0) and pbar its mean on each
-    /// cell: the part of the local solution's displacement there that the cells' constant
-    /// pressures miss (the static kernel without its factor).
-    fn shape_defect(&self, theta: f64, cells: usize, rules: ShapeRules) -> f64 {
-        self.shape_defect_at(theta, cells, 0, rules)
+    /// The mean of d^lambda over cell c - 1 (the amplitude's reference), edge at theta.
+    fn neighbour_mean(&self, theta: f64, dx: f64) -> f64 {
+        self.mean_power(theta * dx, theta * dx + dx, dx)
     }
 
-    /// As [`EdgeModel::shape_defect`], the mean taken over the cell `k` cells behind the edge
-    /// cell instead of the edge cell.
+    /// The displacement the cells' constant pressures miss over the cell `k` behind the edge
+    /// cell, per unit amplitude A: (1 - nu)/pi dx^(lambda + 1) times the shape defect.
+    fn shape_term(&self, theta: f64, dx: f64, c: usize, k: usize, rules: ShapeRules) -> f64 {
+        self.static_factor * pow(dx, self.lambda + 1.0) * self.shape_defect_at(theta, c, k, rules)
+    }
+
+    /// The shape defect (`docs/impact.md`, section 4), dx = 1: with d the distance from the
+    /// edge into the contact, the edge cell d in [theta - 1, theta] and its neighbours
+    /// j = 1..=cells behind it, the mean over the receiving cell, `k` cells behind the edge
+    /// cell (0: the edge cell), of -Int (p - pbar) ln|d - xi| dxi for p = d^lambda (d > 0) and
+    /// pbar its mean on each cell: the part of the local solution's displacement there that
+    /// the cells' constant pressures miss (the static kernel without its factor).
     fn shape_defect_at(&self, theta: f64, cells: usize, k: usize, rules: ShapeRules) -> f64 {
         self.shape_defect_with(theta, cells, k, rules, FAR_CELLS)
     }
@@ -423,9 +437,9 @@ impl<'a> March<'a> {
     /// loaded over one step reaches the cells within c dt of it, c the fastest wave), `None`
     /// when the striker's response is not local (a shell).
     fn reach(&self) -> Option<usize> {
-        let hp = self.tables.reach();
+        let hp = self.tables.reach_at(0);
         match self.striker.as_deref() {
-            Some(s) => s.reach().map(|r| r.max(hp)),
+            Some(s) => s.reach_at(0).map(|r| r.max(hp)),
             None => Some(hp),
         }
     }
@@ -781,14 +795,20 @@ impl<'a> March<'a> {
         let u: Vec<f64> = (0..n)
             .map(|i| self.current(i, c) + d.coupling * self.weight(c))
             .collect();
-        let singular = || ImpactError::Step {
-            time: format!("{:.6}", d.t),
-            reason: "singular contact system".into(),
-        };
+        let singular = || singular_system(d.t);
         let factor = Factor::new(n, self.reach(), |i, j| self.current(i, j), d.coupling, w)
             .ok_or_else(singular)?;
         let z = factor.solve(&u).ok_or_else(singular)?;
-        let sys = std::rc::Rc::new(CellSystem { factor, z });
+        // M^-1 e_{c-k} for the cells behind the edge cell whose conditions carry the shape
+        // correction (the same at every step, like z)
+        let behind = (1..=ROWS_CORRECTED.min(n))
+            .map(|k| {
+                let mut e = vec![0.0; n];
+                e[n - k] = 1.0;
+                factor.solve(&e).ok_or_else(singular)
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let sys = std::rc::Rc::new(CellSystem { factor, z, behind });
         let mut cache = self.systems.borrow_mut();
         if cache.0 != d.coupling {
             *cache = (d.coupling, Vec::new());
@@ -816,10 +836,7 @@ impl<'a> March<'a> {
         for (i, ri) in r.iter_mut().enumerate() {
             *ri = d.target(i, 0.0)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(0.0);
         }
-        let y = sys.factor.solve(&r).ok_or_else(|| ImpactError::Step {
-            time: format!("{:.6}", d.t),
-            reason: "singular contact system".into(),
-        })?;
+        let y = sys.factor.solve(&r).ok_or_else(|| singular_system(d.t))?;
         Ok(TiedBasis { y, system: sys })
     }
 
@@ -854,10 +871,7 @@ impl<'a> March<'a> {
         };
         let den = 1.0 + zw[last];
         if !(den.abs() > 1e-300) || !den.is_finite() {
-            return Err(ImpactError::Step {
-                time: format!("{:.6}", d.t),
-                reason: "singular contact system".into(),
-            });
+            return Err(singular_system(d.t));
         }
         let k = basis.y[last] / den;
         let mut p: Vec<f64> = basis.y.iter().zip(&zw).map(|(y, z)| y - k * z).collect();
@@ -890,24 +904,16 @@ impl<'a> March<'a> {
             })?;
             // the shape correction of the conditions of the cells just behind the edge
             // cell, proportional to p_{c-1} like the edge cell's own (`docs/impact.md`,
-            // section 4)
+            // section 4): q = M^-1 delta from the kept columns M^-1 e_{c-k}
             let rules = self.tables.shape_rules();
-            let neighbour = model.mean_power(theta * dx, theta * dx + dx, dx);
-            let mut delta = vec![0.0; c];
-            for k in 1..=ROWS_CORRECTED.min(c) {
-                delta[c - k] = model.static_factor
-                    * pow(dx, model.lambda + 1.0)
-                    * model.shape_defect_at(theta, c, k, rules)
-                    / neighbour;
+            let neighbour = model.neighbour_mean(theta, dx);
+            let mut q = vec![0.0; c];
+            for (k, col) in (1..).zip(&basis.system.behind) {
+                let coef = model.shape_term(theta, dx, c, k, rules) / neighbour;
+                for (qi, v) in q.iter_mut().zip(col) {
+                    *qi += coef * v;
+                }
             }
-            let q = basis
-                .system
-                .factor
-                .solve(&delta)
-                .ok_or_else(|| ImpactError::Step {
-                    time: format!("{:.6}", d.t),
-                    reason: "singular contact system".into(),
-                })?;
             let (p, f) = self.tied_solution_with(d, basis, c, ratio, Some(&q))?;
             let rho = self.displacement(c, &d.hist, &p) - d.target(c, f)? - gap * p[c - 1];
             Ok((rho, p, f))
@@ -1024,7 +1030,7 @@ mod tests {
             let want = -theta * static_cell_mean(a, b, a, 0.0)
                 + (1.0 - theta) * static_cell_mean(a, b, 0.0, b);
             for cells in [0, 3, 20] {
-                let got = model.shape_defect(theta, cells, rules);
+                let got = model.shape_defect_at(theta, cells, 0, rules);
                 assert!(
                     (got - want).abs() <= 1e-9 * want.abs().max(1e-3),
                     "theta = {theta}, cells = {cells}: {got} against {want}"
@@ -1106,15 +1112,15 @@ mod tests {
                 want += (p - pbar) * kbar(xi) / n as f64;
             }
         }
-        let got = model.shape_defect(theta, 2, rules);
+        let got = model.shape_defect_at(theta, 2, 0, rules);
         assert!(
             (got - want).abs() < 2e-5 * want.abs(),
             "{got} against {want}"
         );
         let (d20, d40, d80) = (
-            model.shape_defect(theta, 20, rules),
-            model.shape_defect(theta, 40, rules),
-            model.shape_defect(theta, 80, rules),
+            model.shape_defect_at(theta, 20, 0, rules),
+            model.shape_defect_at(theta, 40, 0, rules),
+            model.shape_defect_at(theta, 80, 0, rules),
         );
         // tail ~ cells^(-1/2): differences shrink by about sqrt 2
         let ratio = (d40 - d20) / (d80 - d40);

@@ -199,13 +199,8 @@ impl Compliance {
         }
     }
 
-    /// The half-bandwidth of the current step's coefficients (the striker's own tables'
-    /// reach); `None` for the shell, whose modes respond everywhere at once.
-    pub(crate) fn reach(&self) -> Option<usize> {
-        self.reach_at(0)
-    }
-
-    /// The reach of the coefficients c(., l) (`Tables::reach_at`); `None` for the shell.
+    /// The reach of the coefficients c(., l) (`Tables::reach_at`, the striker's own); `None`
+    /// for the shell, whose modes respond everywhere at once.
     pub(crate) fn reach_at(&self, l: usize) -> Option<usize> {
         match self {
             Compliance::Elastic { tables, .. } => Some(tables.reach_at(l)),

@@ -143,7 +143,7 @@ impl Tables {
                 };
                 // causality: nothing reaches cell k by t_{l+1} when its nearest point is
                 // beyond c1 t_{l+1} (the differences of Xi would leave rounding there)
-                let v = if k as f64 - 1.0 >= (l + 1) as f64 * self.kappa {
+                let v = if k > self.reach_at(l) {
                     0.0
                 } else {
                     d2(&self.xi[l + 1]) - d2(&self.xi[l])
@@ -154,15 +154,9 @@ impl Tables {
         Ok(())
     }
 
-    /// The largest k with a(k, 0) not zero: the source cell's load over one step reaches the
-    /// receiver cell k only if the cells' nearest points are closer than c1 dt (k - 1 <
-    /// kappa).
-    pub fn reach(&self) -> usize {
-        self.reach_at(0)
-    }
-
-    /// The largest k with a(k, l) not zero: k - 1 < (l + 1) kappa (the P-wave front at the
-    /// end of the lag's step).
+    /// The largest k with a(k, l) not zero: the source cell's load over step l reaches the
+    /// receiver cell k only if the cells' nearest points are closer than c1 t_{l+1}
+    /// (k - 1 < (l + 1) kappa). At l = 0 it is the half-bandwidth of the step's system.
     pub fn reach_at(&self, l: usize) -> usize {
         ((l + 1) as f64 * self.kappa).ceil() as usize
     }
