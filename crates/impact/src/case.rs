@@ -386,6 +386,29 @@ impl Run {
         n.checked_sub(1).and_then(|i| self.steps.get(i))
     }
 
+    /// The contact half-width at t_n: the edge of step n where it stands for t_n (geometric),
+    /// otherwise interpolated between the edges of the steps around t_n by the times they
+    /// stand for (`StepState::edge_time`; the last step's extrapolated from the two before).
+    pub fn edge_at(&self, n: usize) -> Option<f64> {
+        let s = self.step(n)?;
+        if s.edge_time == s.t {
+            return Some(s.b);
+        }
+        let (a, b) = match (
+            self.step(n + 1),
+            n.checked_sub(1).and_then(|m| self.step(m)),
+        ) {
+            (Some(next), _) => (s, next),
+            (None, Some(before)) => (before, s),
+            (None, None) => return Some(s.b),
+        };
+        let span = b.edge_time - a.edge_time;
+        if !(span > 0.0) {
+            return Some(s.b);
+        }
+        Some(a.b + (b.b - a.b) * (s.t - a.edge_time) / span)
+    }
+
     /// The force at t_n (`docs/impact.md`, section 3): a step's force stands for the middle
     /// of the step, so the mean of the two steps around t_n (the last step extrapolated from
     /// the two before it).
@@ -568,7 +591,7 @@ impl Solution {
         let getters: [Getter; 6] = [
             |r, n| r.step(n).map(|s| s.h),
             |r, n| r.step(n).map(|s| s.v),
-            |r, n| r.step(n).map(|s| s.b),
+            |r, n| r.edge_at(n),
             |r, n| r.force_at(n),
             |r, n| r.step(n).map(|s| s.ws.first().copied().unwrap_or(0.0)),
             |r, n| r.step(n).map(|s| s.striker_work),

@@ -59,9 +59,15 @@ pub struct StepState {
     /// Number of contact cells on one side minus one: cells 0..=k carry pressure (none when
     /// `pressure` is empty).
     pub k: usize,
-    /// Contact half-width estimate (units R): the zero of a square-root fit through the
-    /// last two cell pressures for the Signorini law, f^-1(h) for the kinematic law.
+    /// Contact half-width (units R) at the time `edge_time`: f^-1(h) for the kinematic law
+    /// and a supersonic edge; for the Signorini law the free edge of the step's pressures
+    /// (the local model's edge, or the zero of a square-root fit through the last two cell
+    /// pressures where the edge is captured cell by cell).
     pub b: f64,
+    /// The time b stands for: t_n for a geometric edge, t_n - dt/2 for an edge the step's
+    /// pressures set (they stand for the middle of the step, `docs/impact.md`, section 3).
+    /// [`crate::case::Run::edge_at`] interpolates the edge to t_n.
+    pub edge_time: f64,
     /// Force per unit length R(t) (units mu R).
     pub force: f64,
     /// Cell pressures p_0..p_k (units mu), constant over the step.
@@ -165,6 +171,10 @@ struct EdgeModel {
     /// (units mu = 1), for the shape correction of the free edge's condition; scaled like the
     /// gap for a striker of the half-plane's own wave speeds (the two bodies' compliances add).
     static_factor: f64,
+    /// beta dx, beta the second term of the local expansion p = A d^lambda (1 + beta d):
+    /// the factor of the other edge of a symmetric contact, (1 - d/(2b))^lambda, gives
+    /// beta = -lambda/(2b) (`docs/impact.md`, section 4).
+    curvature: f64,
 }
 
 /// The error of a step whose contact system is singular (or gives a non-finite solution).
@@ -177,6 +187,10 @@ fn singular_system(t: f64) -> ImpactError {
 
 /// A step's contact: (last contact cell, edge, cell pressures, force).
 type StepSet = (usize, f64, Vec<f64>, f64);
+
+/// Whether an edge is that of the step's middle (set by the step's pressures) rather than
+/// of its end (geometric).
+type MidStep = bool;
 
 /// What every trial solve of one step shares.
 struct StepData {
@@ -237,7 +251,9 @@ impl EdgeModel {
     /// (1/dx) Int_lo^hi d^lambda dd (0 <= lo <= hi).
     fn mean_power(&self, lo: f64, hi: f64, dx: f64) -> f64 {
         let e = self.lambda + 1.0;
+        let beta = self.curvature / dx;
         (pow(hi, e) - pow(lo, e)) / (e * dx)
+            + beta * (pow(hi, e + 1.0) - pow(lo, e + 1.0)) / ((e + 1.0) * dx)
     }
 
     /// For the edge b in cell c (theta = (b - x_c + dx/2)/dx in [0, 1]): the ratio of the
@@ -250,7 +266,13 @@ impl EdgeModel {
         let neighbour = self.neighbour_mean(theta, dx);
         let load = self.mean_power(0.0, theta * dx, dx);
         let e = self.lambda + 2.0;
-        let mut gap = self.gap * pow(outside, e) / (e * dx);
+        // the gap of A d^lambda (1 + beta d): A G s^(lambda + 1) (1 + beta_g s) with
+        // beta_g = -beta (lambda + 1)/(lambda + 2) (the kernel of a steadily moving edge is
+        // the static one times a constant, and the static pair of p = d^mu has the gap's
+        // slope s^mu/sin(pi mu))
+        let beta_g = -self.curvature / dx * (self.lambda + 1.0) / e;
+        let mut gap =
+            self.gap * (pow(outside, e) / e + beta_g * pow(outside, e + 1.0) / (e + 1.0)) / dx;
         if let Some(rules) = shape {
             gap -= self.shape_term(theta, dx, c, 0, rules);
         }
@@ -592,14 +614,14 @@ impl<'a> March<'a> {
                     };
                     let done = (f - f_est).abs() <= 1e-14 * f.abs();
                     f_est = f;
-                    set = Some((k, b, p, f));
+                    set = Some(((k, b, p, f), false));
                     if done {
                         break;
                     }
                 }
             }
             (false, Some(m)) if m.sub_cell && edge_cell(b_prev) >= 2 => {
-                set = Some(self.free_edge(&data, m, edge_cell(b_prev))?);
+                set = Some((self.free_edge(&data, m, edge_cell(b_prev))?, true));
             }
             _ => {
                 // active set of whole cells 0..=k, started from the previous step's
@@ -628,12 +650,12 @@ impl<'a> March<'a> {
                         }
                     }
                     let b = self.edge_fit(k, &p);
-                    set = Some((k, b, p, f));
+                    set = Some(((k, b, p, f), true));
                     break;
                 }
             }
         }
-        let (k, b, p, f) = match set {
+        let ((k, b, p, f), mid_step): (StepSet, MidStep) = match set {
             Some(s) => s,
             None => {
                 // no contact: the striker has left the surface (or never touched it)
@@ -643,7 +665,7 @@ impl<'a> March<'a> {
                         return Ok(false);
                     }
                 }
-                (0, 0.0, Vec::new(), 0.0)
+                ((0, 0.0, Vec::new(), 0.0), false)
             }
         };
         let (h, v) = match self.motion.driven_h(t) {
@@ -693,6 +715,7 @@ impl<'a> March<'a> {
             v,
             k,
             b,
+            edge_time: if mid_step { t - 0.5 * dt } else { t },
             force: f,
             pressure: p,
             w,
@@ -769,6 +792,10 @@ impl<'a> March<'a> {
             geometric: eb.range == lamb::edge::SpeedRange::Supersonic,
             sub_cell: speed < FREE_EDGE_SPEED * sr,
             static_factor: scale * (1.0 - hp.poisson()) / std::f64::consts::PI,
+            curvature: match self.steps.last() {
+                Some(s) if s.b > 0.0 => -eb.selected * self.dx / (2.0 * s.b),
+                _ => 0.0,
+            },
         }))
     }
 
@@ -915,8 +942,15 @@ impl<'a> March<'a> {
                 }
             }
             let (p, f) = self.tied_solution_with(d, basis, c, ratio, Some(&q))?;
-            let rho = self.displacement(c, &d.hist, &p) - d.target(c, f)? - gap * p[c - 1];
-            Ok((rho, p, f))
+            // the edge cell's mean gap at the step's end, and at its middle, where the
+            // step's pressures (and so the model's edge and gap) stand: the mean of the
+            // gaps at the step's two ends
+            let end_gap = self.displacement(c, &d.hist, &p) - d.target(c, f)?;
+            let gap_now = match self.gap_before(c) {
+                Some(before) => 0.5 * (end_gap + before),
+                None => end_gap,
+            };
+            Ok((gap_now - gap * p[c - 1], p, f))
         };
         let mut c = start.clamp(2, top.max(2));
         let mut tried = vec![false; top + 2];
@@ -971,6 +1005,14 @@ impl<'a> March<'a> {
         }
     }
 
+    /// The mean gap over cell i at the end of the previous step, w_i - (h - mean f_i), if
+    /// that step has the cell's displacement.
+    fn gap_before(&self, i: usize) -> Option<f64> {
+        let s = self.steps.last()?;
+        let w = s.w.get(i)? + s.ws.get(i).copied().unwrap_or(0.0);
+        Some(w - (s.h - self.profile_mean(i)?))
+    }
+
     /// The Signorini edge inside the last cell: the zero of C (b - x)^(1/2) through the last
     /// two cell pressures, kept within the last cell.
     fn edge_fit(&self, k: usize, p: &[f64]) -> f64 {
@@ -1022,6 +1064,7 @@ mod tests {
             geometric: false,
             sub_cell: true,
             static_factor: 1.0,
+            curvature: 0.0,
         };
         let tables = tables();
         let rules = tables.shape_rules();
@@ -1053,6 +1096,7 @@ mod tests {
                 geometric: false,
                 sub_cell: true,
                 static_factor: 1.0,
+                curvature: 0.0,
             };
             for theta in [0.05, 0.5, 0.95] {
                 for cells in [6, 40, 300] {
@@ -1085,6 +1129,7 @@ mod tests {
             geometric: false,
             sub_cell: true,
             static_factor: 1.0,
+            curvature: 0.0,
         };
         let tables = tables();
         let rules = tables.shape_rules();

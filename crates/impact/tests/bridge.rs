@@ -74,7 +74,11 @@ fn bridge_with(p: f64, dx: f64, edge_model: bool) -> (f64, f64, f64) {
         err = err.max((pj - want).abs());
         top = top.max(want.abs());
     }
-    (alpha / p - 1.0, err / top, last.b / (p * last.t) - 1.0)
+    (
+        alpha / p - 1.0,
+        err / top,
+        last.b / (p * last.edge_time) - 1.0,
+    )
 }
 
 #[test]

@@ -191,36 +191,44 @@ fn quasi_static_limit_is_hertz() {
 /// The free edge's position: a parabola driven slowly (V = 1e-3 c1, the edge below 0.01 c_R)
 /// is quasi-static, so its contact half-width follows Hertz's relation with its own force,
 /// b = (4 R F/(pi E*))^(1/2), to the dynamic correction (about 1e-4). The shape correction
-/// of the edge cell's condition and its neighbour's (`docs/impact.md`, section 4) brings b
-/// there to 4.1e-4 at dx = R/200 and 1.7e-4 at R/400 (the edge cell's alone: 1.5e-3 and 6.9e-4;
-/// none: 7e-3 and 3.7e-3, the cells' constant pressures behind the edge displacing the edge
-/// cell by as much as the model's gap).
+/// of the edge cell's condition and its neighbour's (`docs/impact.md`, section 4) brought b at
+/// the last step to 4.1e-4 at dx = R/200 and 1.7e-4 at R/400 (the edge cell's alone: 1.5e-3
+/// and 6.9e-4; none: 7e-3 and 3.7e-3, the cells' constant pressures behind the edge displacing
+/// the edge cell by as much as the model's gap); the test now bounds the largest distance
+/// over a time range, which the edge's phase in its cell sets.
 #[test]
 fn slow_free_edge_follows_hertz() {
     let nu = 0.25;
-    let errors: Vec<f64> = [0.005, 0.0025]
-        .iter()
-        .map(|&dx| {
-            let mut c = ImpactCase::new(
-                nu,
-                Profile::Parabola { radius: 1.0 },
-                Drive::Speed(1e-3),
-                EdgeLaw::Signorini,
-                5.0,
-            );
-            c.dx = dx;
-            c.levels = 1;
-            let sol = c.solve(|_| {}).unwrap();
-            let run = &sol.runs[0];
-            let n = run.steps.len();
-            let (b, force) = (run.step(n).unwrap().b, run.force_at(n).unwrap());
-            // force in units mu R; E* = 2 mu/(1 - nu)
-            let hertz = (force * 2.0 * (1.0 - nu) / std::f64::consts::PI).sqrt();
-            b / hertz - 1.0
-        })
-        .collect();
-    assert!(errors[0].abs() < 8e-4, "b against Hertz: {errors:?}");
-    assert!(errors[1].abs() < 3.5e-4, "b against Hertz: {errors:?}");
+    for dx in [0.005, 0.0025] {
+        let mut c = ImpactCase::new(
+            nu,
+            Profile::Parabola { radius: 1.0 },
+            Drive::Speed(1e-3),
+            EdgeLaw::Signorini,
+            5.0,
+        );
+        c.dx = dx;
+        c.levels = 1;
+        let sol = c.solve(|_| {}).unwrap();
+        let run = &sol.runs[0];
+        // the largest distance of b from Hertz's edge for the same force, over
+        // c1 t/R in [2, 5] (13 to 20 cells at dx = R/200), in cells: 0.028 and 0.014 at
+        // R/200 and R/400 with the mid-step edge condition alone, before the other edge's factor
+        // (`docs/impact.md`, section 4), 0.0062 and 0.0043 with them
+        let worst = (1..=run.steps.len())
+            .filter(|&n| run.step(n).unwrap().t >= 2.0)
+            .map(|n| {
+                let (b, force) = (run.edge_at(n).unwrap(), run.force_at(n).unwrap());
+                // force in units mu R; E* = 2 mu/(1 - nu)
+                let hertz = (force * 2.0 * (1.0 - nu) / std::f64::consts::PI).sqrt();
+                (b - hertz).abs() / dx
+            })
+            .fold(0.0f64, f64::max);
+        assert!(
+            worst < 0.01,
+            "dx = {dx}: b off Hertz's edge by {worst} cells"
+        );
+    }
 }
 
 /// Convergence: the observed order of h, R and b is about one or more (the method's order:
