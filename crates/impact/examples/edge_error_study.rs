@@ -2,10 +2,12 @@
 //!
 //! - `edge_error_study REF DX1 DX2 ...`: the reference case (`impact::REFERENCE`, Signorini
 //!   law) at each DX against one grid at REF, the largest error of b, h and the force over
-//!   c1 t/R in [0.5, 2), [2, 5), [5, 7.5), [7.5, 10) relative to each one's peak
-//!   (`SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and raw);
+//!   c1 t/R in [0.5, 2), [2, 5), [5, 7.5), [7.5, 10) relative to each one's peak, b as
+//!   reported (`RAW=1`: the per-step edges interpolated to t_n; `KAPPA=K`: another time step;
+//!   `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and per step);
 //! - `edge_error_study hertz DX1 ...`: a parabola driven at 1e-3 c1, b against Hertz's edge
-//!   for its own force, the largest and mean distance in cells over three time ranges;
+//!   for its own force, the largest and mean distance in cells over three time ranges
+//!   (`THETA=1` prints the distance against the edge's place in its cell);
 //! - `edge_error_study wedge P DX1 ...`: the driven wedge of the bridge test at alpha = P c1,
 //!   the fitted edge speed, the edge's offset and lag (`SEQ=EVERY` prints
 //!   (b_n - alpha t_b)/(alpha dt) step by step).
@@ -15,9 +17,21 @@ fn single(dx: f64) -> (impact::case::Run, f64) {
     let mut case = ImpactCase::reference(EdgeLaw::Signorini);
     case.dx = dx;
     case.levels = 1;
+    if let Ok(k) = std::env::var("KAPPA") {
+        case.kappa = k.parse().expect("a number");
+    }
     let t0 = std::time::Instant::now();
     let sol = case.solve(|_| {}).expect("solves");
     (sol.runs[0].clone(), t0.elapsed().as_secs_f64())
+}
+
+/// The reported edge at t_n, or with `RAW` set the per-step edges interpolated to t_n.
+fn edge(run: &impact::case::Run, n: usize) -> f64 {
+    if std::env::var("RAW").is_ok() {
+        run.edge_interpolated(n).expect("a step")
+    } else {
+        run.edge_at(n).expect("a step")
+    }
 }
 
 fn main() {
@@ -38,6 +52,19 @@ fn main() {
             let sol = c.solve(|_| {}).unwrap();
             let run = &sol.runs[0];
             let n = run.steps.len();
+            if std::env::var("THETA").is_ok() {
+                for m in (1..n).step_by(7) {
+                    let st = run.step(m).unwrap();
+                    if st.t < 3.0 || st.t > 4.0 {
+                        continue;
+                    }
+                    let (b, force) = (run.edge_at(m).unwrap(), run.force_at(m).unwrap());
+                    let hertz = (force * 2.0 * (1.0 - nu) / std::f64::consts::PI).sqrt();
+                    let theta = st.b / dx + 0.5 - (st.b / dx + 0.5).floor();
+                    print!("{theta:.2}:{:+.4} ", (b - hertz) / dx);
+                }
+                println!();
+            }
             for (lo, hi) in [(1.0, 2.0), (2.0, 3.5), (3.5, 5.0)] {
                 let (mut mx, mut sm, mut cnt) = (0.0f64, 0.0, 0.0);
                 for m in 1..n {
@@ -144,9 +171,8 @@ fn main() {
             let Some(r) = rref.steps.get(m) else { continue };
             for (w, &(lo, hi)) in windows.iter().enumerate() {
                 if s.t >= lo && s.t < hi {
-                    eb[w] = eb[w].max(
-                        (run.edge_at(n + 1).unwrap() - rref.edge_at(m + 1).unwrap()).abs() / bpk,
-                    );
+                    let (bs, br) = (edge(&run, n + 1), edge(&rref, m + 1));
+                    eb[w] = eb[w].max((bs - br).abs() / bpk);
                     eh[w] = eh[w].max((s.h - r.h).abs() / hpk);
                     if let (Some(f), Some(g)) = (run.force_at(n + 1), rref.force_at(m + 1)) {
                         ef[w] = ef[w].max((f - g).abs() / fpk);
@@ -168,7 +194,7 @@ fn main() {
                     print!(
                         "{:.3}:{:+.1}|{:+.1} ",
                         s.t,
-                        (run.edge_at(n + 1).unwrap() - rref.edge_at(m + 1).unwrap()) * 1e6,
+                        (edge(&run, n + 1) - edge(&rref, m + 1)) * 1e6,
                         (s.b - r.b) * 1e6
                     );
                 }

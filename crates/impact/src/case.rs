@@ -380,20 +380,92 @@ pub struct Run {
     pub coefficient_error: f64,
 }
 
+/// The reported edge's smoothing window, in cell crossings (`Run::edge_at`).
+pub const EDGE_CROSSINGS: f64 = 3.0;
+
+/// The largest window of the reported edge's smoothing, in steps (`Run::edge_at`).
+pub const EDGE_WINDOW_STEPS: usize = 40;
+
 impl Run {
     /// Step n (time t_n = n dt, n >= 1), if the march reached it.
     pub fn step(&self, n: usize) -> Option<&StepState> {
         n.checked_sub(1).and_then(|i| self.steps.get(i))
     }
 
-    /// The contact half-width at t_n: the edge of step n where it stands for t_n (geometric),
-    /// otherwise interpolated between the edges of the steps around t_n by the times they
-    /// stand for (`StepState::edge_time`; the last step's extrapolated from the two before).
+    /// The contact half-width at t_n (`docs/impact.md`, section 4, the edge's report): the
+    /// edge of step n where it stands for t_n (geometric); otherwise the value at t_n of the
+    /// least-squares quadratic through the steps' edges (at the times they stand for) over a
+    /// window of [`EDGE_CROSSINGS`] cell crossings centred on t_n (at most
+    /// [`EDGE_WINDOW_STEPS`] steps, narrowed to stay symmetric within the steps whose edges
+    /// the pressures set), which averages out the edge's phase error within its cell; where
+    /// the window holds fewer than five edges, the edges of the two steps around t_n
+    /// interpolated.
     pub fn edge_at(&self, n: usize) -> Option<f64> {
         let s = self.step(n)?;
         if s.edge_time == s.t {
             return Some(s.b);
         }
+        let mid = |m: usize| {
+            self.step(m)
+                .is_some_and(|x| x.edge_time != x.t && x.b > 0.0)
+        };
+        // the block of steps around n whose edges the pressures set
+        let (mut first, mut last) = (n, n);
+        while first > 1 && mid(first - 1) && n - first < EDGE_WINDOW_STEPS {
+            first -= 1;
+        }
+        while mid(last + 1) && last - n < EDGE_WINDOW_STEPS {
+            last += 1;
+        }
+        let b = |m: usize| self.step(m).map_or(0.0, |x| x.b);
+        let k = (n - first).min(last - n).min(5);
+        let speed = if k > 0 {
+            ((b(n + k) - b(n - k)) / (2.0 * k as f64 * self.dt)).abs()
+        } else {
+            0.0
+        };
+        let steps = (EDGE_CROSSINGS * self.dx / (speed * self.dt)).min(EDGE_WINDOW_STEPS as f64);
+        let half = ((0.5 * steps) as usize).min(n - first).min(last - n);
+        if half < 2 {
+            return self.edge_interpolated(n);
+        }
+        // normal equations of a + c1 x + c2 x^2, x = (time - t_n)/width
+        let width = (half as f64 + 0.5) * self.dt;
+        let (mut m, mut r) = ([[0.0f64; 3]; 3], [0.0f64; 3]);
+        for j in n - half..=n + half {
+            let st = self.step(j)?;
+            let x = (st.edge_time - s.t) / width;
+            let weight = 1.0;
+            let phi = [1.0, x, x * x];
+            for (i, row) in m.iter_mut().enumerate() {
+                for (mij, pj) in row.iter_mut().zip(&phi) {
+                    *mij += weight * phi[i] * pj;
+                }
+                r[i] += weight * phi[i] * st.b;
+            }
+        }
+        let det = |a: &[[f64; 3]; 3]| {
+            a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
+                - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+                + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
+        };
+        let mut m0 = m;
+        for (row, ri) in m0.iter_mut().zip(&r) {
+            row[0] = *ri;
+        }
+        let value = det(&m0) / det(&m);
+        if value.is_finite() {
+            Some(value)
+        } else {
+            self.edge_interpolated(n)
+        }
+    }
+
+    /// The edge at t_n interpolated between the edges of the steps around it by the times
+    /// they stand for (`StepState::edge_time`; the last step's extrapolated from the two
+    /// before).
+    pub fn edge_interpolated(&self, n: usize) -> Option<f64> {
+        let s = self.step(n)?;
         let (a, b) = match (
             self.step(n + 1),
             n.checked_sub(1).and_then(|m| self.step(m)),
@@ -869,5 +941,85 @@ impl Solution {
         (1..=run.steps.len())
             .filter_map(|n| run.force_at(n).map(|f| (f * m2, run.steps[n - 1].t)))
             .max_by(|a, b| a.0.total_cmp(&b.0))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A run whose edges follow a smooth b(t) plus a sawtooth of one cell crossing's period
+    /// and zero mean (the phase error of the edge cell), at the middle of each step.
+    fn sawtooth_run(amplitude: f64) -> (Run, impl Fn(f64) -> f64) {
+        let (dx, dt) = (0.01, 0.02);
+        let truth = |t: f64| 0.05 + 0.05 * t - 0.002 * t * t;
+        let steps = (1..=400)
+            .map(|n| {
+                let t = n as f64 * dt;
+                let tau = t - 0.5 * dt;
+                let phase = (truth(tau) / dx).fract();
+                StepState {
+                    t,
+                    h: 0.0,
+                    v: 0.0,
+                    k: 0,
+                    b: truth(tau) + amplitude * dx * (phase - 0.5),
+                    edge_time: tau,
+                    force: 0.0,
+                    pressure: Vec::new(),
+                    w: Vec::new(),
+                    ws: Vec::new(),
+                    work: 0.0,
+                    striker_work: 0.0,
+                }
+            })
+            .collect();
+        let run = Run {
+            dx,
+            dt,
+            steps,
+            separation: None,
+            coefficient_error: 0.0,
+        };
+        (run, truth)
+    }
+
+    #[test]
+    fn the_reported_edge_averages_out_the_phase_sawtooth() {
+        let (run, truth) = sawtooth_run(0.02);
+        let (mut smooth, mut raw) = (0.0f64, 0.0f64);
+        // away from the run's ends, where the window is whole
+        for n in 60..=340 {
+            let t = n as f64 * run.dt;
+            smooth = smooth.max((run.edge_at(n).unwrap() - truth(t)).abs() / run.dx);
+            raw = raw.max((run.edge_interpolated(n).unwrap() - truth(t)).abs() / run.dx);
+        }
+        // the sawtooth's amplitude is 0.01 cells
+        assert!(raw > 0.008, "raw edge error {raw} cells");
+        assert!(
+            smooth < 0.002,
+            "smoothed edge error {smooth} cells (raw {raw})"
+        );
+        // a smooth quadratic history is reproduced to rounding, up to two steps from the
+        // run's ends (where the edges are interpolated)
+        let (run, truth) = sawtooth_run(0.0);
+        for n in 3..=398 {
+            let t = n as f64 * run.dt;
+            let e = (run.edge_at(n).unwrap() - truth(t)).abs();
+            assert!(e < 1e-12, "step {n}: {e}");
+        }
+        for n in [1, 2, 399, 400] {
+            let t = n as f64 * run.dt;
+            let e = (run.edge_at(n).unwrap() - truth(t)).abs();
+            assert!(e < 1e-3 * run.dx, "step {n}: {e}");
+        }
+    }
+
+    #[test]
+    fn a_geometric_edge_is_reported_as_it_is() {
+        let (mut run, _) = sawtooth_run(0.02);
+        let s = &mut run.steps[199];
+        s.edge_time = s.t;
+        assert_eq!(run.edge_at(200), Some(run.steps[199].b));
     }
 }
