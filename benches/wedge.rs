@@ -2,7 +2,7 @@
 //! profile, one full solve (Q, V) with friction and coupling, an alpha-V curve and the inverse
 //! alpha(V), each in f64 and at 30 and 100 digits (MPFR), the full solve and the curve also
 //! in double-double (what `--digits 30` runs on the paper's construction); and one genuine
-//! solve (three basis sizes) in f64 and at 30 digits (MPFR).
+//! solve (three basis sizes) in f64 and at 30 digits (double-double, and MPFR for comparison).
 //!
 //! Run: `cargo bench --bench wedge`. The 200-point curve is benchmarked in f64 and at 30
 //! digits; at 100 digits a 10-point curve stands for it (per point it costs one full solve).
@@ -238,12 +238,23 @@ fn bench_genuine(c: &mut Criterion) {
             .v_hat()
         })
     });
-    // what `wedge solve --solution genuine --digits 30` runs: MPFR at the bits of 30 digits
-    // plus the guard bits, with that precision's options
+    // what `wedge solve --solution genuine --digits 30` runs: double-double, with the
+    // options of its 104 bits
+    let dd = Dd::from_f64(0.3);
+    let dd_opts = genuine::SolveOptions::for_precision(dd.prec());
+    g.bench_function(label(Some(30)), |b| {
+        b.iter(|| {
+            genuine::GenuineCase::solve(&mat, &ind, black_box(dd), dd_opts.clone())
+                .unwrap()
+                .v_hat()
+                .to_f64()
+        })
+    });
+    // the same on MPFR at the bits of 30 digits plus the guard bits (what it ran before)
     let l = like(Some(30)).unwrap();
     let p = l.lit(0.3);
     let opts = genuine::SolveOptions::for_precision(l.prec());
-    g.bench_function(label(Some(30)), |b| {
+    g.bench_function("30_digits_mpfr", |b| {
         b.iter(|| {
             genuine::GenuineCase::solve(&mat, &ind, black_box(p.clone()), opts.clone())
                 .unwrap()

@@ -36,12 +36,13 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 /// Guard bits added to the precision that holds the requested digits.
 pub const GUARD_BITS: u32 = 32;
 
-/// Requests of at most this many digits on the paper's construction are computed in
-/// double-double arithmetic ([`complexfn::Dd`], 104 bits, no allocation), one solve per case,
-/// instead of MPFR: 10 to 100 times faster. Each quantity's estimate is then that of
-/// 104-bit arithmetic (typically 1e-29 to 1e-28 relative, larger near the Rayleigh speed),
-/// a bound that measured errors stay far below (`tests/double_double.rs`). The genuine
-/// solution and larger requests use MPFR (`docs/double-double.md`).
+/// Requests of at most this many digits are computed in double-double arithmetic
+/// ([`complexfn::Dd`], 104 bits, no allocation), one solve per case, instead of MPFR: 5 to
+/// 100 times faster. Each quantity's estimate is then that of 104-bit arithmetic (on the
+/// paper's construction typically 1e-29 to 1e-28 relative, larger near the Rayleigh speed;
+/// on the genuine solution 1e-28 to 1e-24, its least-squares solve losing more), a bound that
+/// measured errors stay below (`tests/double_double.rs`, `tests/genuine_double_double.rs`).
+/// Larger requests use MPFR (`docs/double-double.md`).
 pub const DOUBLE_DOUBLE_DIGITS: u32 = 30;
 
 /// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s),
@@ -76,10 +77,9 @@ impl CaseInput {
         }
     }
     /// Whether the case is computed in double-double arithmetic: `digits` at most
-    /// [`DOUBLE_DOUBLE_DIGITS`] on the paper's construction (either variant).
+    /// [`DOUBLE_DOUBLE_DIGITS`] (any solution variant).
     pub fn uses_double_double(&self) -> bool {
         self.digits.is_some_and(|d| d <= DOUBLE_DOUBLE_DIGITS)
-            && self.solution.is_paper_construction()
     }
     /// The arithmetic of the case, for messages: `f64`, `double-double` or `MPFR`.
     pub fn arithmetic(&self) -> &'static str {
@@ -216,9 +216,8 @@ pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
 /// high precision). What the selection leaves out is not computed.
 ///
 /// Every numeric quantity carries its own absolute estimate, from one solve: with `digits`
-/// above [`DOUBLE_DOUBLE_DIGITS`] (or for the genuine solution) at the MPFR precision of
-/// `digits` plus [`GUARD_BITS`], up to that many digits on the paper's construction in
-/// double-double arithmetic. The estimates are the quadratures' own (level doubling,
+/// above [`DOUBLE_DOUBLE_DIGITS`] at the MPFR precision of `digits` plus [`GUARD_BITS`], up to
+/// that many digits in double-double arithmetic. The estimates are the quadratures' own (level doubling,
 /// round-off floors), never optimistic without a second solve (`docs/estimates.md`).
 /// When the indenter speed is given, the inverse solve's uncertainty in alpha is carried
 /// into every quantity through its slope (two f64 rows at nearby alpha).
