@@ -45,6 +45,14 @@ pub const GUARD_BITS: u32 = 32;
 /// Larger requests use MPFR (`docs/double-double.md`).
 pub const DOUBLE_DOUBLE_DIGITS: u32 = 30;
 
+/// The genuine solution's least-squares fit can leave fewer correct digits in double-double
+/// than a request of up to [`DOUBLE_DOUBLE_DIGITS`] asks for (V to 1e-25 relative at
+/// Theta 30 deg, to 4e-22 at Theta 5 deg; 1e-28 to 6e-28 at Theta 89 deg): a request of d
+/// digits is answered in double-double only when V's relative estimate is at most
+/// 10^(DOUBLE_DOUBLE_SLACK - d), and otherwise computed again on MPFR at d digits plus
+/// [`GUARD_BITS`] (`docs/double-double.md`).
+pub const DOUBLE_DOUBLE_SLACK: i32 = 3;
+
 /// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s),
 /// as decimal text parsed at the working precision (`f64.into()` for a double).
 #[derive(Clone, Debug, PartialEq)]
@@ -85,6 +93,9 @@ impl CaseInput {
     pub fn arithmetic(&self) -> &'static str {
         match self.digits {
             None => "f64",
+            Some(_) if self.uses_double_double() && self.solution == Solution::Genuine => {
+                "double-double, or MPFR where it falls short"
+            }
             Some(_) if self.uses_double_double() => "double-double",
             Some(_) => "MPFR",
         }
@@ -111,7 +122,21 @@ impl Solver for Variant<'_> {
         &self.0.indenter
     }
     fn solve<T: CachedRules>(&self, p: T) -> Result<Solved<T>> {
-        solve_at(&self.0.material, &self.0.indenter, self.0.solution, p)
+        let bits = p.prec();
+        let s = solve_at(&self.0.material, &self.0.indenter, self.0.solution, p)?;
+        if let (Solution::Genuine, Some(d), 54..=128) = (self.0.solution, self.0.digits, bits) {
+            let v = s.v_hat()?;
+            let reached = v.error / v.value.to_f64().abs();
+            let asked = 10f64.powi(DOUBLE_DOUBLE_SLACK - d as i32);
+            if !(reached <= asked) {
+                return Err(WedgeError::ShortOfPrecision {
+                    bits,
+                    reached,
+                    asked,
+                });
+            }
+        }
+        Ok(s)
     }
 }
 
@@ -160,7 +185,13 @@ trait Job<R> {
 fn at_precision<R>(input: &CaseInput, job: &impl Job<R>) -> Result<R> {
     match input.precision()? {
         Precision::F64 => job.run(&0.0_f64),
-        Precision::Bits(_) if input.uses_double_double() => job.run(&Dd::from_f64(0.0)),
+        Precision::Bits(b) if input.uses_double_double() => {
+            match job.run(&Dd::from_f64(0.0)) {
+                // the genuine solution short of the request in double-double: on MPFR
+                Err(WedgeError::ShortOfPrecision { .. }) => job.run(&Float::with_val(b, 0)),
+                r => r,
+            }
+        }
         Precision::Bits(b) => job.run(&Float::with_val(b, 0)),
     }
 }
@@ -240,9 +271,17 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result
         }
         return Ok(r);
     };
-    let (mut r, p) = if input.uses_double_double() {
-        // one solve: the estimates of 104-bit arithmetic bound its errors on their own
-        let s = build(input, speed, &Dd::from_f64(0.0))?;
+    // one solve in double-double where it reaches the request (the genuine solution's
+    // shortfall is an error that sends the case to MPFR)
+    let dd = match input.uses_double_double() {
+        true => match build(input, speed, &Dd::from_f64(0.0)) {
+            Err(WedgeError::ShortOfPrecision { .. }) => None,
+            s => Some(s?),
+        },
+        false => None,
+    };
+    let (mut r, p) = if let Some(s) = dd {
+        // the estimates of 104-bit arithmetic bound its errors on their own
         let r = SolveReport::selected(&s, input, digits + 10, sel)?;
         (
             r.rounded(

@@ -42,6 +42,18 @@ pub enum WedgeError {
     /// An error of the complex-function layer.
     #[error(transparent)]
     Complex(#[from] complexfn::Error),
+    /// The working arithmetic reaches less than the requested accuracy (a solve in
+    /// double-double whose estimate exceeds what the request allows): the caller computes the
+    /// case again with more bits.
+    #[error("relative error {reached:e} at {bits} bits, above the {asked:e} the request allows")]
+    ShortOfPrecision {
+        /// The working precision in bits.
+        bits: u32,
+        /// The relative error reached.
+        reached: f64,
+        /// The relative error the request allows.
+        asked: f64,
+    },
     /// A numerical failure of one case, with the inputs that led to it.
     #[error("{inputs}: {error}")]
     AtCase {
