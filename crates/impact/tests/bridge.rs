@@ -113,6 +113,9 @@ fn edge_model_makes_the_edge_error_smooth() {
     };
     let with = errors(true);
     let without = errors(false);
+    eprintln!(
+        "b/(alpha t_b) - 1 at R/100, R/200, R/400: model {with:.3e?}, whole cells {without:.3e?}"
+    );
     let ratio = |e: &[f64], i: usize| e[i] / e[i + 1];
     let richardson = |e: &[f64], i: usize| (2.0 * e[i + 1] - e[i]).abs();
     for i in 0..2 {

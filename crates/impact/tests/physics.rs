@@ -224,6 +224,7 @@ fn slow_free_edge_follows_hertz() {
                 (b - hertz).abs() / dx
             })
             .fold(0.0f64, f64::max);
+        eprintln!("dx = {dx}: b off Hertz's edge by at most {worst:.4} cells");
         assert!(
             worst < 0.01,
             "dx = {dx}: b off Hertz's edge by {worst} cells"
