@@ -113,8 +113,16 @@ fn edge_model_makes_the_edge_error_smooth() {
     };
     let with = errors(true);
     let without = errors(false);
+    let show = |e: &[f64]| {
+        e.iter()
+            .map(|x| format!("{x:.2e}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     eprintln!(
-        "b/(alpha t_b) - 1 at R/100, R/200, R/400: model {with:.3e?}, whole cells {without:.3e?}"
+        "b/(alpha t_b) - 1 at R/100, R/200, R/400: model {}; whole cells {}",
+        show(&with),
+        show(&without)
     );
     let ratio = |e: &[f64], i: usize| e[i] / e[i + 1];
     let richardson = |e: &[f64], i: usize| (2.0 * e[i + 1] - e[i]).abs();
