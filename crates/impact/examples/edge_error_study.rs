@@ -13,7 +13,11 @@
 use impact::{EdgeLaw, ImpactCase};
 
 fn single(dx: f64) -> (impact::case::Run, f64) {
-    let mut case = ImpactCase::reference(EdgeLaw::Signorini);
+    let law = match std::env::var("LAW").as_deref() {
+        Ok("kinematic") => EdgeLaw::Kinematic,
+        _ => EdgeLaw::Signorini,
+    };
+    let mut case = ImpactCase::reference(law);
     case.dx = dx;
     case.levels = 1;
     if let Ok(k) = std::env::var("KAPPA") {

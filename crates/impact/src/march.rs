@@ -603,7 +603,12 @@ impl<'a> March<'a> {
                         Some(m) if c >= 2 && c <= imax => {
                             let theta = ((b / dxv + 0.5) - c as f64).clamp(0.0, 1.0);
                             let (ratio, _) = m.tie(theta, dxv, c, None);
-                            let (p, f) = self.solve_tied(&data, c, ratio)?;
+                            // the cells behind the edge carry the shape correction of
+                            // their conditions, as behind a free edge
+                            let basis = self.tied_basis(&data, c)?;
+                            let q = self.behind_corrections(&m, theta, c, &basis);
+                            let (p, f) =
+                                self.tied_solution_with(&data, &basis, c, ratio, Some(&q))?;
                             (c, p, f)
                         }
                         _ => {
@@ -907,6 +912,29 @@ impl<'a> March<'a> {
         Ok((p, force))
     }
 
+    /// The shape correction of the conditions of the cells just behind the edge cell c (edge
+    /// at theta), proportional to p_{c-1} like the edge cell's own (`docs/impact.md`, section
+    /// 4): q = M^-1 delta from the kept columns M^-1 e_{c-k} of `basis`, for
+    /// [`March::tied_solution_with`].
+    fn behind_corrections(
+        &self,
+        model: &EdgeModel,
+        theta: f64,
+        c: usize,
+        basis: &TiedBasis,
+    ) -> Vec<f64> {
+        let rules = self.tables.shape_rules();
+        let neighbour = model.neighbour_mean(theta, self.dx);
+        let mut q = vec![0.0; c];
+        for (k, col) in (1..).zip(&basis.system.behind) {
+            let coef = model.shape_term(theta, self.dx, c, k, rules) / neighbour;
+            for (qi, v) in q.iter_mut().zip(col) {
+                *qi += coef * v;
+            }
+        }
+        q
+    }
+
     /// The free (Signorini) edge inside a cell: the edge cell c carries the local model's
     /// pressure, and its mean displacement leaves the model's gap over the part beyond the
     /// edge; the edge is the root of that condition in the cell (regula falsi), the cell
@@ -929,18 +957,7 @@ impl<'a> March<'a> {
                 time: format!("{:.6}", d.t),
                 reason: "no factorisation of the edge cell's system".into(),
             })?;
-            // the shape correction of the conditions of the cells just behind the edge
-            // cell, proportional to p_{c-1} like the edge cell's own (`docs/impact.md`,
-            // section 4): q = M^-1 delta from the kept columns M^-1 e_{c-k}
-            let rules = self.tables.shape_rules();
-            let neighbour = model.neighbour_mean(theta, dx);
-            let mut q = vec![0.0; c];
-            for (k, col) in (1..).zip(&basis.system.behind) {
-                let coef = model.shape_term(theta, dx, c, k, rules) / neighbour;
-                for (qi, v) in q.iter_mut().zip(col) {
-                    *qi += coef * v;
-                }
-            }
+            let q = self.behind_corrections(&model, theta, c, basis);
             let (p, f) = self.tied_solution_with(d, basis, c, ratio, Some(&q))?;
             // the edge cell's mean gap at the step's end, and at its middle, where the
             // step's pressures (and so the model's edge and gap) stand: the mean of the
