@@ -4,6 +4,7 @@
 //!   law) at each DX against one grid at REF, the largest error of b, h and the force over
 //!   c1 t/R in [0.5, 2), [2, 5), [5, 7.5), [7.5, 10) relative to each one's peak, b as
 //!   reported (`RAW=1`: the per-step edges interpolated to t_n; `KAPPA=K`: another time step;
+//!   `LAW=kinematic`: the kinematic law;
 //!   `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and per step).
 //!
 //! The slowly driven parabola against Hertz's edge and the driven wedge's edge against the
