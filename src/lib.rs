@@ -18,7 +18,7 @@ pub mod report;
 pub mod stability;
 
 use complexfn::quadrature::CachedRules;
-use complexfn::{Dd, Precision, Real};
+use complexfn::{Dd, Precision};
 use genuine::GenuineSolver;
 use rug::Float;
 use wedge::{
@@ -124,7 +124,9 @@ impl Solver for Variant<'_> {
     fn solve<T: CachedRules>(&self, p: T) -> Result<Solved<T>> {
         let bits = p.prec();
         let s = solve_at(&self.0.material, &self.0.indenter, self.0.solution, p)?;
-        if let (Solution::Genuine, Some(d), 54..=128) = (self.0.solution, self.0.digits, bits) {
+        let double_double = bits == complexfn::double_double::DD_BITS;
+        if let (Solution::Genuine, Some(d), true) = (self.0.solution, self.0.digits, double_double)
+        {
             let v = s.v_hat()?;
             let reached = v.error / v.value.to_f64().abs();
             let asked = 10f64.powi(DOUBLE_DOUBLE_SLACK - d as i32);
@@ -263,7 +265,7 @@ pub fn solve(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveR
 fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveReport> {
     let digits = input.out_digits();
     let full = sel.wants_admissibility();
-    let Precision::Bits(bits) = input.precision()? else {
+    let Precision::Bits(_) = input.precision()? else {
         let s = build(input, speed, &0.0_f64)?;
         let mut r = SolveReport::selected(&s, input, digits, sel)?;
         if full {
@@ -271,31 +273,9 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result
         }
         return Ok(r);
     };
-    // one solve in double-double where it reaches the request (the genuine solution's
-    // shortfall is an error that sends the case to MPFR)
-    let dd = match input.uses_double_double() {
-        true => match build(input, speed, &Dd::from_f64(0.0)) {
-            Err(WedgeError::ShortOfPrecision { .. }) => None,
-            s => Some(s?),
-        },
-        false => None,
-    };
-    let (mut r, p) = if let Some(s) = dd {
-        // the estimates of 104-bit arithmetic bound its errors on their own
-        let r = SolveReport::selected(&s, input, digits + 10, sel)?;
-        (
-            r.rounded(
-                digits,
-                print_floor(digits, complexfn::double_double::DD_BITS),
-            ),
-            s.p().to_f64(),
-        )
-    } else {
-        // one solve: the estimates of the working precision bound its errors on their own
-        let s = build(input, speed, &Float::with_val(bits, 0))?;
-        let r = SolveReport::selected(&s, input, digits + 10, sel)?;
-        (r.rounded(digits, print_floor(digits, bits)), s.p().to_f64())
-    };
+    // one solve at the working precision (double-double where it reaches the request), whose
+    // estimates bound its errors on their own
+    let (mut r, p) = at_precision(input, &Rounded(input, speed, sel))?;
     if full {
         // the admissibility checks are sign checks: made on the f64 twin of the case
         let alpha = p * input.material.c1().value();
@@ -303,6 +283,22 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result
         r.set_admissibility(twin.admissibility());
     }
     Ok(r)
+}
+
+/// A solve report with `digits + 10` digits rounded to the request, printed no finer than the
+/// working precision allows, and the case's contact speed p.
+struct Rounded<'a>(&'a CaseInput, &'a Speed, &'a Selection);
+
+impl Job<(SolveReport, f64)> for Rounded<'_> {
+    fn run<T: CachedRules>(&self, like: &T) -> Result<(SolveReport, f64)> {
+        let digits = self.0.out_digits();
+        let s = build(self.0, self.1, like)?;
+        let r = SolveReport::selected(&s, self.0, digits + 10, self.2)?;
+        Ok((
+            r.rounded(digits, print_floor(digits, like.prec())),
+            s.p().to_f64(),
+        ))
+    }
 }
 
 /// With V given, alpha is found by the inverse solve, which stops once |V(alpha) - V| is

@@ -431,33 +431,21 @@ impl Run {
         }
         // normal equations of a + c1 x + c2 x^2, x = (time - t_n)/width
         let width = (half as f64 + 0.5) * self.dt;
-        let (mut m, mut r) = ([[0.0f64; 3]; 3], [0.0f64; 3]);
+        let (mut m, mut r) = (vec![0.0f64; 9], [0.0f64; 3]);
         for j in n - half..=n + half {
             let st = self.step(j)?;
             let x = (st.edge_time - s.t) / width;
-            let weight = 1.0;
             let phi = [1.0, x, x * x];
-            for (i, row) in m.iter_mut().enumerate() {
-                for (mij, pj) in row.iter_mut().zip(&phi) {
-                    *mij += weight * phi[i] * pj;
+            for i in 0..3 {
+                for (mij, pj) in m[3 * i..3 * i + 3].iter_mut().zip(&phi) {
+                    *mij += phi[i] * pj;
                 }
-                r[i] += weight * phi[i] * st.b;
+                r[i] += phi[i] * st.b;
             }
         }
-        let det = |a: &[[f64; 3]; 3]| {
-            a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
-                - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
-                + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
-        };
-        let mut m0 = m;
-        for (row, ri) in m0.iter_mut().zip(&r) {
-            row[0] = *ri;
-        }
-        let value = det(&m0) / det(&m);
-        if value.is_finite() {
-            Some(value)
-        } else {
-            self.edge_interpolated(n)
+        match crate::linalg::Lu::new(m, 3).and_then(|lu| lu.solve(&r)) {
+            Some(c) => Some(c[0]),
+            None => self.edge_interpolated(n),
         }
     }
 

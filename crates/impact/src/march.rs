@@ -592,6 +592,8 @@ impl<'a> March<'a> {
         match (geometric, model) {
             (true, _) => {
                 let mut f_est = 0.0;
+                // the tied basis of the edge cell, the same while the edge stays in it
+                let mut kept: Option<(usize, TiedBasis)> = None;
                 for _ in 0..50 {
                     let h = h_pred - coupling * f_est;
                     let b = kin(h).unwrap_or(0.0);
@@ -605,10 +607,16 @@ impl<'a> March<'a> {
                             let (ratio, _) = m.tie(theta, dxv, c, None);
                             // the cells behind the edge carry the shape correction of
                             // their conditions, as behind a free edge
-                            let basis = self.tied_basis(&data, c)?;
-                            let q = self.behind_corrections(&m, theta, c, &basis);
+                            if kept.as_ref().is_none_or(|(kc, _)| *kc != c) {
+                                kept = Some((c, self.tied_basis(&data, c)?));
+                            }
+                            let basis = kept
+                                .as_ref()
+                                .map(|(_, b)| b)
+                                .ok_or_else(|| singular_system(data.t))?;
+                            let q = self.behind_corrections(&m, theta, c, basis);
                             let (p, f) =
-                                self.tied_solution_with(&data, &basis, c, ratio, Some(&q))?;
+                                self.tied_solution_with(&data, basis, c, ratio, Some(&q))?;
                             (c, p, f)
                         }
                         _ => {
