@@ -386,6 +386,12 @@ pub const EDGE_CROSSINGS: f64 = 3.0;
 /// The largest window of the reported edge's smoothing, in steps (`Run::edge_at`).
 pub const EDGE_WINDOW_STEPS: usize = 40;
 
+/// The largest window of the reported force's smoothing, in steps (`Run::force_at`): one
+/// crossing takes 1/(kappa |db/dt|) steps on every grid (37 near the reference case's peak
+/// force), and three of them are needed to average the force's sawtooth out
+/// (`docs/impact.md`, section 4).
+pub const FORCE_WINDOW_STEPS: usize = 120;
+
 impl Run {
     /// Step n (time t_n = n dt, n >= 1), if the march reached it.
     pub fn step(&self, n: usize) -> Option<&StepState> {
@@ -405,16 +411,35 @@ impl Run {
         if s.edge_time == s.t {
             return Some(s.b);
         }
-        let mid = |m: usize| {
-            self.step(m)
-                .is_some_and(|x| x.edge_time != x.t && x.b > 0.0)
-        };
-        // the block of steps around n whose edges the pressures set
+        let mid = |x: &StepState| x.edge_time != x.t && x.b > 0.0;
+        self.crossing_fit(n, EDGE_WINDOW_STEPS, mid, |x| (x.edge_time, x.b))
+            .or_else(|| self.edge_interpolated(n))
+    }
+
+    /// The value at t_n of the least-squares quadratic through `value` (time, value) of the
+    /// steps in a window of [`EDGE_CROSSINGS`] cell crossings of the edge centred on step n,
+    /// at most `cap` steps and narrowed to stay symmetric within the block of steps around n
+    /// that satisfy `eligible` (n among them); `None` where the window holds fewer than five
+    /// steps (`docs/impact.md`, section 4: the edge's phase within its cell leaves a sawtooth
+    /// of one crossing's period in the per-step values, which the fit averages out).
+    fn crossing_fit(
+        &self,
+        n: usize,
+        cap: usize,
+        eligible: impl Fn(&StepState) -> bool,
+        value: impl Fn(&StepState) -> (f64, f64),
+    ) -> Option<f64> {
+        let s = self.step(n)?;
+        let ok = |m: usize| self.step(m).is_some_and(&eligible);
+        if !ok(n) {
+            return None;
+        }
+        // the block of eligible steps around n
         let (mut first, mut last) = (n, n);
-        while first > 1 && mid(first - 1) && n - first < EDGE_WINDOW_STEPS {
+        while first > 1 && ok(first - 1) && n - first < cap {
             first -= 1;
         }
-        while mid(last + 1) && last - n < EDGE_WINDOW_STEPS {
+        while ok(last + 1) && last - n < cap {
             last += 1;
         }
         let b = |m: usize| self.step(m).map_or(0.0, |x| x.b);
@@ -424,29 +449,28 @@ impl Run {
         } else {
             0.0
         };
-        let steps = (EDGE_CROSSINGS * self.dx / (speed * self.dt)).min(EDGE_WINDOW_STEPS as f64);
+        let steps = (EDGE_CROSSINGS * self.dx / (speed * self.dt)).min(cap as f64);
         let half = ((0.5 * steps) as usize).min(n - first).min(last - n);
         if half < 2 {
-            return self.edge_interpolated(n);
+            return None;
         }
         // normal equations of a + c1 x + c2 x^2, x = (time - t_n)/width
         let width = (half as f64 + 0.5) * self.dt;
         let (mut m, mut r) = (vec![0.0f64; 9], [0.0f64; 3]);
         for j in n - half..=n + half {
-            let st = self.step(j)?;
-            let x = (st.edge_time - s.t) / width;
+            let (time, v) = value(self.step(j)?);
+            let x = (time - s.t) / width;
             let phi = [1.0, x, x * x];
             for i in 0..3 {
                 for (mij, pj) in m[3 * i..3 * i + 3].iter_mut().zip(&phi) {
                     *mij += phi[i] * pj;
                 }
-                r[i] += phi[i] * st.b;
+                r[i] += phi[i] * v;
             }
         }
-        match crate::linalg::Lu::new(m, 3).and_then(|lu| lu.solve(&r)) {
-            Some(c) => Some(c[0]),
-            None => self.edge_interpolated(n),
-        }
+        crate::linalg::Lu::new(m, 3)
+            .and_then(|lu| lu.solve(&r))
+            .map(|c| c[0])
     }
 
     /// The edge at t_n interpolated between the edges of the steps around it by the times
@@ -469,10 +493,27 @@ impl Run {
         Some(a.b + (b.b - a.b) * (s.t - a.edge_time) / span)
     }
 
-    /// The force at t_n (`docs/impact.md`, section 3): a step's force stands for the middle
-    /// of the step, so the mean of the two steps around t_n (the last step extrapolated from
-    /// the two before it).
+    /// The force at t_n (`docs/impact.md`, sections 3 and 4): a step's force stands for the
+    /// middle of the step, and it carries the sawtooth of the edge's cell crossings (large
+    /// under the kinematic law, whose edge cell has no condition of its own), so the value at
+    /// t_n of the least-squares quadratic through the steps' forces over a window of
+    /// [`EDGE_CROSSINGS`] cell crossings (at most [`FORCE_WINDOW_STEPS`] steps, symmetric
+    /// within the steps in contact); where that window holds fewer than five steps,
+    /// [`Run::force_interpolated`].
     pub fn force_at(&self, n: usize) -> Option<f64> {
+        let dt = self.dt;
+        self.crossing_fit(
+            n,
+            FORCE_WINDOW_STEPS,
+            |x| !x.pressure.is_empty(),
+            |x| (x.t - 0.5 * dt, x.force),
+        )
+        .or_else(|| self.force_interpolated(n))
+    }
+
+    /// The force at t_n from the two steps around it (their forces stand for the middles of
+    /// the steps): their mean, the last step's extrapolated from the two before it.
+    pub fn force_interpolated(&self, n: usize) -> Option<f64> {
         let f = |n: usize| self.step(n).map(|s| s.force);
         match (f(n), f(n + 1)) {
             (Some(a), Some(b)) => Some(0.5 * (a + b)),
@@ -1000,6 +1041,51 @@ mod tests {
             let t = n as f64 * run.dt;
             let e = (run.edge_at(n).unwrap() - truth(t)).abs();
             assert!(e < 1e-3 * run.dx, "step {n}: {e}");
+        }
+    }
+
+    /// The force of a smooth history plus the sawtooth of the edge's crossings (a drop at
+    /// each cell's entry, then a rise through the crossing, zero mean), as under the
+    /// kinematic law: the report removes the sawtooth and reproduces a quadratic history.
+    #[test]
+    fn the_reported_force_averages_out_the_crossing_sawtooth() {
+        let force = |t: f64| 1.0 + 0.3 * t - 0.02 * t * t;
+        let with_sawtooth = |amplitude: f64| {
+            let (mut run, _) = sawtooth_run(0.0);
+            let dx = run.dx;
+            for s in run.steps.iter_mut() {
+                let tau = s.t - 0.5 * run.dt;
+                let phase = (s.b / dx).fract();
+                s.force = force(tau) + amplitude * (phase - 0.5);
+                s.pressure = vec![s.force];
+            }
+            run
+        };
+        let run = with_sawtooth(0.03);
+        let (mut smooth, mut raw) = (0.0f64, 0.0f64);
+        for n in 100..=300 {
+            let t = n as f64 * run.dt;
+            smooth = smooth.max((run.force_at(n).unwrap() - force(t)).abs());
+            raw = raw.max((run.force_interpolated(n).unwrap() - force(t)).abs());
+        }
+        // the sawtooth's amplitude is 0.015
+        assert!(raw > 0.012, "raw force error {raw}");
+        assert!(smooth < 0.003, "smoothed force error {smooth} (raw {raw})");
+        let run = with_sawtooth(0.0);
+        for n in 3..=398 {
+            let t = n as f64 * run.dt;
+            let e = (run.force_at(n).unwrap() - force(t)).abs();
+            assert!(e < 1e-12, "step {n}: {e}");
+        }
+        // a step out of contact (205, given a wild force here) bounds the windows: it
+        // enters no fit on either side
+        let mut run = with_sawtooth(0.0);
+        run.steps[204].pressure.clear();
+        run.steps[204].force = 1e3;
+        for n in [200, 210] {
+            let t = n as f64 * run.dt;
+            let e = (run.force_at(n).unwrap() - force(t)).abs();
+            assert!(e < 1e-9, "step {n}: {e}");
         }
     }
 
