@@ -32,7 +32,10 @@ use std::sync::Arc;
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 
+use complexfn::quadrature::CachedRules;
+
 use crate::error::{ImpactError, Result};
+use crate::scalar::Scalar;
 use crate::striker::Compliance;
 use crate::tables::Tables;
 
@@ -44,21 +47,21 @@ const MIN_WIDTH: usize = 8;
 
 /// A source of influence rows: the unscaled row a(., l) and its scale (the half-plane's tables,
 /// or a striker's compliance).
-pub(crate) trait KernelRows {
+pub(crate) trait KernelRows<T = f64> {
     /// Makes a(k, l) available for k <= kmax and l <= lmax.
     fn ensure_rows(&mut self, kmax: usize, lmax: usize) -> Result<()>;
     /// The row a(., l) and its scale.
-    fn scaled_row(&self, l: usize) -> (&[f64], f64);
+    fn scaled_row(&self, l: usize) -> (&[T], T);
     /// The largest k with a(k, l) possibly not zero (causality), `None` when every k may be.
     fn reach(&self, l: usize) -> Option<usize>;
 }
 
-impl KernelRows for Tables {
+impl<T: Scalar + CachedRules> KernelRows<T> for Tables<T> {
     fn ensure_rows(&mut self, kmax: usize, lmax: usize) -> Result<()> {
         self.ensure(kmax, lmax)
     }
-    fn scaled_row(&self, l: usize) -> (&[f64], f64) {
-        (self.row(l), 1.0)
+    fn scaled_row(&self, l: usize) -> (&[T], T) {
+        (self.row(l), T::of(1.0))
     }
     fn reach(&self, l: usize) -> Option<usize> {
         Some(self.reach_at(l))
@@ -79,18 +82,18 @@ impl KernelRows for Compliance {
 
 /// The history sum of one kernel: the pressures of the steps so far and the accumulated
 /// displacements of the steps to come.
-pub(crate) struct HistorySum {
+pub(crate) struct HistorySum<T = f64> {
     /// The factor of every coefficient (dx: A = dx a).
-    scale: f64,
+    scale: T,
     /// Width W of the space dimension (a power of two).
     width: usize,
     /// The last step that will be asked for (no target beyond it is accumulated).
     horizon: Option<usize>,
     /// The pressures of the steps pushed so far.
-    pressures: Vec<Vec<f64>>,
+    pressures: Vec<Vec<T>>,
     /// acc[t - first]: the displacement at cells 0..W of target step t from the squares
     /// summed so far; `first` is the first target not yet consumed.
-    acc: std::collections::VecDeque<Vec<f64>>,
+    acc: std::collections::VecDeque<Vec<T>>,
     first: usize,
     /// The kernel's transform by level, laid out [space][time] (space 4W, time 2^(q+1)), for
     /// the current width.
@@ -98,10 +101,10 @@ pub(crate) struct HistorySum {
     planner: FftPlanner<f64>,
 }
 
-impl HistorySum {
+impl<T: Scalar> HistorySum<T> {
     /// An empty history for coefficients scaled by `scale` (dx), accumulating targets up to
     /// `horizon` steps (all, when `None`).
-    pub(crate) fn new(scale: f64, horizon: Option<usize>) -> Self {
+    pub(crate) fn new(scale: T, horizon: Option<usize>) -> Self {
         HistorySum {
             scale,
             width: MIN_WIDTH,
@@ -130,17 +133,17 @@ impl HistorySum {
     }
 
     /// The accumulator of target t (created zero when absent).
-    fn acc_mut(&mut self, t: usize) -> &mut Vec<f64> {
+    fn acc_mut(&mut self, t: usize) -> &mut Vec<T> {
         let idx = t - self.first;
         while self.acc.len() <= idx {
-            self.acc.push_back(vec![0.0; self.width]);
+            self.acc.push_back(vec![T::of(0.0); self.width]);
         }
         &mut self.acc[idx]
     }
 
     /// Records the pressures of the next step (cells 0, 1, ...) and adds the square it
     /// completes.
-    pub(crate) fn push(&mut self, kernel: &mut impl KernelRows, p: &[f64]) -> Result<()> {
+    pub(crate) fn push(&mut self, kernel: &mut impl KernelRows<T>, p: &[T]) -> Result<()> {
         if p.len() > self.width {
             self.grow(kernel, p.len())?;
         }
@@ -151,7 +154,7 @@ impl HistorySum {
 
     /// The displacements at cells 0..=imax of the next target step (step `len()`, 0-based)
     /// due to every step pushed.
-    pub(crate) fn at(&mut self, kernel: &mut impl KernelRows, imax: usize) -> Result<Vec<f64>> {
+    pub(crate) fn at(&mut self, kernel: &mut impl KernelRows<T>, imax: usize) -> Result<Vec<T>> {
         if imax + 1 > self.width {
             self.grow(kernel, imax + 1)?;
         }
@@ -173,7 +176,7 @@ impl HistorySum {
 
     /// Widens the space dimension to at least `cells` and rebuilds the pending targets'
     /// accumulators from the squares that reach them (one per level).
-    fn grow(&mut self, kernel: &mut impl KernelRows, cells: usize) -> Result<()> {
+    fn grow(&mut self, kernel: &mut impl KernelRows<T>, cells: usize) -> Result<()> {
         let mut w = self.width;
         while w < cells {
             w *= 2;
@@ -196,7 +199,7 @@ impl HistorySum {
 
     /// Adds the square completed by the c-th step, sources [c - L, c) and targets [c, c + L),
     /// L = 2^(trailing zeros of c), into the accumulators of the targets >= `from`.
-    fn square(&mut self, kernel: &mut impl KernelRows, c: usize, from: usize) -> Result<()> {
+    fn square(&mut self, kernel: &mut impl KernelRows<T>, c: usize, from: usize) -> Result<()> {
         let len = 1usize << c.trailing_zeros();
         let t_end = match self.horizon {
             Some(h) => (c + len).min(h),
@@ -208,7 +211,8 @@ impl HistorySum {
         // lags up to the last target's from the first source
         let lag_max = t_end - 1 - (c - len);
         kernel.ensure_rows(2 * self.width, lag_max.max(1))?;
-        if len < DIRECT_BELOW {
+        // the FFT's rounding is f64's: other precisions sum every square directly
+        if len < DIRECT_BELOW || !T::FFT {
             self.direct(kernel, c, len, from.max(c), t_end);
             Ok(())
         } else {
@@ -217,14 +221,14 @@ impl HistorySum {
     }
 
     /// The square summed directly (Toeplitz plus mirror rows).
-    fn direct(&mut self, kernel: &impl KernelRows, c: usize, len: usize, t0: usize, t1: usize) {
+    fn direct(&mut self, kernel: &impl KernelRows<T>, c: usize, len: usize, t0: usize, t1: usize) {
         let w = self.width;
         let scale = self.scale;
         for t in t0..t1 {
             if !self.wanted(t) {
                 continue;
             }
-            let mut out = vec![0.0; w];
+            let mut out = vec![T::of(0.0); w];
             for s in c - len..c {
                 let (row, f) = kernel.scaled_row(t - s);
                 let f = f * scale;
@@ -282,7 +286,7 @@ impl HistorySum {
     /// = scale a(|k|, lag) for lags 1 ..= lag_max (< 2 len) and k in (-W, 2W).
     fn kernel_spectrum(
         &mut self,
-        kernel: &impl KernelRows,
+        kernel: &impl KernelRows<T>,
         len: usize,
         lag_max: usize,
     ) -> Vec<Complex<f64>> {
@@ -291,13 +295,13 @@ impl HistorySum {
         let mut data = vec![Complex::default(); nt * ns];
         for lag in 1..=lag_max.min(nt - 1) {
             let (row, f) = kernel.scaled_row(lag);
-            let f = f * self.scale;
+            let f = (f * self.scale).to_f64();
             let line = &mut data[lag * ns..(lag + 1) * ns];
             for k in 0..2 * w {
-                line[k] = Complex::new(row[k] * f, 0.0);
+                line[k] = Complex::new(row[k].to_f64() * f, 0.0);
             }
             for k in 1..w {
-                line[ns - k] = Complex::new(row[k] * f, 0.0);
+                line[ns - k] = Complex::new(row[k].to_f64() * f, 0.0);
             }
         }
         self.forward_2d(&mut data, nt, ns)
@@ -306,7 +310,7 @@ impl HistorySum {
     /// The square by a 2-D FFT of size 2L x 4W.
     fn by_fft(
         &mut self,
-        kernel: &impl KernelRows,
+        kernel: &impl KernelRows<T>,
         c: usize,
         len: usize,
         t0: usize,
@@ -333,7 +337,8 @@ impl HistorySum {
         let mut data = vec![Complex::default(); nt * ns];
         for (sigma, p) in self.pressures[c - len..c].iter().enumerate() {
             let line = &mut data[sigma * ns..(sigma + 1) * ns];
-            for (j, &pj) in p.iter().enumerate() {
+            for (j, pj) in p.iter().enumerate() {
+                let pj = pj.to_f64();
                 line[j] = Complex::new(pj, 0.0);
                 if j > 0 {
                     line[ns - j] = Complex::new(pj, 0.0);
@@ -365,7 +370,7 @@ impl HistorySum {
             is.process(&mut line);
             let acc = self.acc_mut(t);
             for (a, v) in acc.iter_mut().zip(&line) {
-                *a += v.re * norm;
+                *a += T::of(v.re * norm);
             }
         }
         Ok(())
@@ -435,5 +440,62 @@ mod tests {
             println!("horizon {horizon:?}: largest relative difference {worst:e}");
             assert_eq!(fast.len(), steps);
         }
+    }
+
+    /// In double-double every square is summed directly: the history equals the naive sum
+    /// in double-double to its rounding, and the f64 history (by FFT) to f64's.
+    #[test]
+    fn double_double_history_is_the_naive_sum() {
+        use complexfn::{Dd, Real};
+        let nu = 0.3;
+        let mut tables =
+            Tables::new(HalfPlane::from_poisson(Dd::of(nu)).unwrap(), Dd::of(2.0)).unwrap();
+        let mut tables64 = Tables::new(HalfPlane::from_poisson(nu).unwrap(), 2.0).unwrap();
+        let dx = 0.01;
+        let n = 80;
+        let mut fast = HistorySum::new(Dd::of(dx), None);
+        let mut fast64 = HistorySum::new(dx, None);
+        let mut pressures: Vec<Vec<Dd>> = Vec::new();
+        let (mut worst, mut worst64, mut size) = (0.0f64, 0.0f64, 0.0f64);
+        for t in 0..n {
+            let k = (t as f64 * 0.3).min(20.0) as usize;
+            let imax = k + 3;
+            tables.ensure(2 * imax + 2, t + 1).unwrap();
+            // the naive sum in double-double
+            let mut want = vec![Dd::of(0.0); imax + 1];
+            for (s, p) in pressures.iter().enumerate() {
+                let row = tables.row(t - s);
+                for (j, &pj) in p.iter().enumerate() {
+                    for (i, o) in want.iter_mut().enumerate() {
+                        let mirror = if j > 0 { row[i + j] } else { Dd::of(0.0) };
+                        *o += (row[i.abs_diff(j)] + mirror) * pj * dx;
+                    }
+                }
+            }
+            let got = fast.at(&mut tables, imax).unwrap();
+            let got64 = fast64.at(&mut tables64, imax).unwrap();
+            for ((g, w), g64) in got.iter().zip(&want).zip(&got64) {
+                worst = worst.max((*g - *w).abs().to_f64());
+                worst64 = worst64.max((g64 - w.to_f64()).abs());
+                size = size.max(w.abs().to_f64());
+            }
+            let p: Vec<Dd> = (0..=k)
+                .map(|j| Dd::of(1.0 + 0.3 * j as f64) / Dd::of(3.0 + t as f64))
+                .collect();
+            fast.push(&mut tables, &p).unwrap();
+            fast64
+                .push(
+                    &mut tables64,
+                    &p.iter().map(|v| v.to_f64()).collect::<Vec<_>>(),
+                )
+                .unwrap();
+            pressures.push(p);
+        }
+        let (worst, worst64) = (worst / size, worst64 / size);
+        assert!(worst < 1e-30, "double-double against naive: {worst:e}");
+        // f64 carries its tables' rounding (1.5e-14 absolute in the coefficients, the
+        // tables' test), summed over the history
+        assert!(worst64 < 1e-12, "f64 against double-double: {worst64:e}");
+        eprintln!("largest relative differences: double-double {worst:.1e}, f64 {worst64:.1e}");
     }
 }

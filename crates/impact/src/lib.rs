@@ -18,6 +18,7 @@ pub(crate) mod history;
 pub(crate) mod linalg;
 pub mod march;
 pub mod profile;
+pub mod scalar;
 pub mod striker;
 pub mod tables;
 

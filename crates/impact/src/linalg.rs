@@ -4,19 +4,21 @@
 //! gamma 1 w^T the rigid striker's coupling through its equation of motion, every row the
 //! same) solved with the Sherman-Morrison formula on B's factorisation.
 
+use crate::scalar::Scalar;
+
 /// The LU factorisation with partial pivoting of a row-major n x n matrix.
 #[derive(Debug)]
-pub(crate) struct Lu {
+pub(crate) struct Lu<T = f64> {
     n: usize,
     /// U on and above the diagonal, the multipliers of L below it.
-    a: Vec<f64>,
+    a: Vec<T>,
     /// The row swapped into place at each column.
     piv: Vec<usize>,
 }
 
-impl Lu {
+impl<T: Scalar> Lu<T> {
     /// Factorises `a`; `None` when a pivot vanishes.
-    pub(crate) fn new(mut a: Vec<f64>, n: usize) -> Option<Self> {
+    pub(crate) fn new(mut a: Vec<T>, n: usize) -> Option<Self> {
         let mut piv = Vec::with_capacity(n);
         for c in 0..n {
             let mut p = c;
@@ -40,7 +42,8 @@ impl Lu {
                 a[i * n + c] = f;
                 if f != 0.0 {
                     for j in c + 1..n {
-                        a[i * n + j] -= f * a[c * n + j];
+                        let acj = a[c * n + j];
+                        a[i * n + j] -= f * acj;
                     }
                 }
             }
@@ -49,7 +52,7 @@ impl Lu {
     }
 
     /// The solution of a x = r; `None` when it is not finite.
-    pub(crate) fn solve(&self, r: &[f64]) -> Option<Vec<f64>> {
+    pub(crate) fn solve(&self, r: &[T]) -> Option<Vec<T>> {
         let (n, a) = (self.n, &self.a);
         let mut x = r.to_vec();
         // the rows were swapped whole (multipliers included): all swaps first, then L
@@ -80,17 +83,17 @@ impl Lu {
 /// widen U to kl + ku super-diagonals). O(n kl (kl + ku)) to factorise, O(n (2 kl + ku)) to
 /// solve.
 #[derive(Debug)]
-pub(crate) struct BandLu {
+pub(crate) struct BandLu<T = f64> {
     n: usize,
     kl: usize,
     ku: usize,
     /// Column j holds rows j - kl - ku ..= j + kl at offsets 0 ..= 2 kl + ku.
-    ab: Vec<f64>,
+    ab: Vec<T>,
     /// The row swapped into place at each column.
     piv: Vec<usize>,
 }
 
-impl BandLu {
+impl<T: Scalar> BandLu<T> {
     fn at(&self, i: usize, j: usize) -> usize {
         j * (2 * self.kl + self.ku + 1) + self.kl + self.ku + i - j
     }
@@ -101,14 +104,14 @@ impl BandLu {
         n: usize,
         kl: usize,
         ku: usize,
-        entry: impl Fn(usize, usize) -> f64,
+        entry: impl Fn(usize, usize) -> T,
     ) -> Option<Self> {
         let ld = 2 * kl + ku + 1;
         let mut lu = BandLu {
             n,
             kl,
             ku,
-            ab: vec![0.0; n * ld],
+            ab: vec![T::of(0.0); n * ld],
             piv: Vec::with_capacity(n),
         };
         for j in 0..n {
@@ -146,7 +149,8 @@ impl BandLu {
                 if f != 0.0 {
                     for j in c + 1..=right {
                         let (ij, cj) = (lu.at(i, j), lu.at(c, j));
-                        lu.ab[ij] -= f * lu.ab[cj];
+                        let acj = lu.ab[cj];
+                        lu.ab[ij] -= f * acj;
                     }
                 }
             }
@@ -155,7 +159,7 @@ impl BandLu {
     }
 
     /// The solution of a x = r; `None` when it is not finite.
-    pub(crate) fn solve(&self, r: &[f64]) -> Option<Vec<f64>> {
+    pub(crate) fn solve(&self, r: &[T]) -> Option<Vec<T>> {
         let n = self.n;
         let ld = 2 * self.kl + self.ku + 1;
         let mut x = r.to_vec();
@@ -167,7 +171,7 @@ impl BandLu {
                 // column c's multipliers lie contiguously below its diagonal
                 let l = &self.ab[self.at(c + 1, c)..=self.at(last, c)];
                 for (xi, m) in x[c + 1..=last].iter_mut().zip(l) {
-                    *xi -= m * xc;
+                    *xi -= *m * xc;
                 }
             }
         }
@@ -178,7 +182,7 @@ impl BandLu {
                 // row i of U steps by ld - 1 through the band storage
                 let u = self.ab[self.at(i, i + 1)..].iter().step_by(ld - 1);
                 for (uij, xj) in u.zip(&x[i + 1..=end]) {
-                    s -= uij * xj;
+                    s -= *uij * *xj;
                 }
             }
             x[i] = s / self.ab[self.at(i, i)];
@@ -189,51 +193,50 @@ impl BandLu {
 
 /// A factorised contact system M.
 #[derive(Debug)]
-pub(crate) enum Factor {
+pub(crate) enum Factor<T = f64> {
     /// M factorised whole.
-    Dense(Lu),
+    Dense(Lu<T>),
     /// M = B + gamma 1 w^T with B banded: B's factorisation, q = B^-1 1 and gamma/(1 + gamma
     /// w.q) (Sherman-Morrison: M^-1 r = y - q gamma (w.y)/(1 + gamma w.q), y = B^-1 r).
     Band {
         /// B's factorisation.
-        lu: BandLu,
+        lu: BandLu<T>,
         /// The column weights w.
-        w: Vec<f64>,
+        w: Vec<T>,
         /// B^-1 1 (empty when gamma = 0).
-        q: Vec<f64>,
+        q: Vec<T>,
         /// gamma/(1 + gamma w.q).
-        scale: f64,
+        scale: T,
     },
 }
 
-impl Factor {
+impl<T: Scalar> Factor<T> {
     /// M = B + gamma 1 w^T with B of half-bandwidth `band` given by `entry`, factorised
     /// banded when the band is narrow against n, whole otherwise; `None` when M is singular.
     pub(crate) fn new(
         n: usize,
         band: Option<usize>,
-        entry: impl Fn(usize, usize) -> f64,
-        gamma: f64,
-        w: Vec<f64>,
+        entry: impl Fn(usize, usize) -> T,
+        gamma: T,
+        w: Vec<T>,
     ) -> Option<Self> {
         match band {
             Some(s) if 4 * s + 8 < n => {
                 let lu = BandLu::new(n, s, s, entry)?;
                 let (q, scale) = if gamma != 0.0 {
-                    let q = lu.solve(&vec![1.0; n])?;
-                    let wq: f64 = w.iter().zip(&q).map(|(a, b)| a * b).sum();
-                    let den = 1.0 + gamma * wq;
+                    let q = lu.solve(&vec![T::of(1.0); n])?;
+                    let den = gamma * T::dot(&w, &q) + 1.0;
                     if !(den.abs() > 1e-300) {
                         return None;
                     }
                     (q, gamma / den)
                 } else {
-                    (Vec::new(), 0.0)
+                    (Vec::new(), T::of(0.0))
                 };
                 Some(Factor::Band { lu, w, q, scale })
             }
             _ => {
-                let mut a = vec![0.0; n * n];
+                let mut a = vec![T::of(0.0); n * n];
                 for i in 0..n {
                     for j in 0..n {
                         a[i * n + j] = entry(i, j) + gamma * w[j];
@@ -245,15 +248,15 @@ impl Factor {
     }
 
     /// The solution of M x = r; `None` when it is not finite.
-    pub(crate) fn solve(&self, r: &[f64]) -> Option<Vec<f64>> {
+    pub(crate) fn solve(&self, r: &[T]) -> Option<Vec<T>> {
         match self {
             Factor::Dense(lu) => lu.solve(r),
             Factor::Band { lu, w, q, scale } => {
                 let mut y = lu.solve(r)?;
                 if !q.is_empty() {
-                    let k = scale * w.iter().zip(&y).map(|(a, b)| a * b).sum::<f64>();
+                    let k = *scale * T::dot(w, &y);
                     for (yi, qi) in y.iter_mut().zip(q) {
-                        *yi -= k * qi;
+                        *yi -= k * *qi;
                     }
                 }
                 y.iter().all(|v| v.is_finite()).then_some(y)
@@ -340,5 +343,52 @@ mod tests {
         }
         // a singular band matrix is refused
         assert!(BandLu::new(n, kl, ku, |i, j| if j == 5 { 0.0 } else { a(i, j) }).is_none());
+    }
+
+    /// The same factorisations in double-double: the residuals fall to that precision's
+    /// rounding (computed in double-double), and the f64 solutions agree to theirs.
+    #[test]
+    fn double_double_systems_reach_their_rounding() {
+        use complexfn::{Dd, Real};
+        let (n, kl) = (30, 3);
+        let entry = |i: usize, j: usize| -> f64 {
+            let d = i.abs_diff(j);
+            if d > kl {
+                0.0
+            } else {
+                1.0 / (1.0 + d as f64) + ((i * 5 + j * 3) % 7) as f64 * 0.05
+            }
+        };
+        let dd = |i: usize, j: usize| Dd::of(entry(i, j)) / Dd::of(3.0);
+        let gamma = Dd::of(0.37);
+        let w: Vec<Dd> = (0..n).map(|j| Dd::of(1.0 + 0.1 * j as f64)).collect();
+        let r: Vec<Dd> = (0..n).map(|i| Dd::of(i as f64 * 0.7).sin()).collect();
+        for band in [Some(kl), None] {
+            let m = Factor::new(n, band, dd, gamma, w.clone()).unwrap();
+            let x = m.solve(&r).unwrap();
+            let wx = Dd::dot(&w, &x);
+            let worst = (0..n)
+                .map(|i| {
+                    let row: Vec<Dd> = (0..n).map(|j| dd(i, j)).collect();
+                    (Dd::dot(&row, &x) + gamma * wx - r[i]).abs().to_f64()
+                })
+                .fold(0.0, f64::max);
+            assert!(worst < 1e-29, "{band:?}: residual {worst:e}");
+            // the f64 solve of the same matrix (rounded) agrees to f64's rounding
+            let m64 = Factor::new(
+                n,
+                band,
+                |i, j| dd(i, j).to_f64(),
+                0.37,
+                w.iter().map(|v| v.to_f64()).collect(),
+            )
+            .unwrap();
+            let x64 = m64
+                .solve(&r.iter().map(|v| v.to_f64()).collect::<Vec<_>>())
+                .unwrap();
+            for (a, b) in x.iter().zip(&x64) {
+                assert!((a.to_f64() - b).abs() < 1e-12 * (1.0 + b.abs()));
+            }
+        }
     }
 }

@@ -28,10 +28,11 @@
 //! and the material only: one table serves every grid of the same kappa (the refinement
 //! levels). Units c1 = 1, mu = 1.
 
-use complexfn::quadrature::gauss_legendre_rule;
+use complexfn::quadrature::{gauss_legendre_rule, CachedRules};
 use lamb::HalfPlane;
 
 use crate::error::Result;
+use crate::scalar::Scalar;
 
 /// Gauss-Legendre size of the rule for pieces clustered at their ends (the free edge's shape
 /// correction, `march`).
@@ -40,28 +41,28 @@ const RULE_FINE: usize = 24;
 const SMOOTH_FINE: usize = 7;
 
 /// Gauss-Legendre rules on [-1, 1] for pieces clustered at their ends and for smooth pieces.
-pub(crate) type ShapeRules<'r> = (&'r [(f64, f64)], &'r [(f64, f64)]);
+pub(crate) type ShapeRules<'r, T = f64> = (&'r [(T, T)], &'r [(T, T)]);
 
 /// The normalised coefficients a(k, l) (dx = 1), grown on demand in k and l.
-pub struct Tables {
-    kappa: f64,
-    half_plane: HalfPlane<f64>,
+pub struct Tables<T = f64> {
+    kappa: T,
+    half_plane: HalfPlane<T>,
     /// xi[l][j] = Xi(j, l kappa) (dx = 1), j = 0, 1, ...
-    xi: Vec<Vec<f64>>,
+    xi: Vec<Vec<T>>,
     /// The largest error estimate of a value of each row of `xi`.
     xi_err: Vec<f64>,
     /// a[l][k] for l = 0 .. xi.len() - 2.
-    a: Vec<Vec<f64>>,
+    a: Vec<Vec<T>>,
     /// Largest absolute error estimate of a coefficient so far.
     err: f64,
     /// The Gauss-Legendre rules on [-1, 1] of the shape correction.
-    fine: std::sync::Arc<Vec<(f64, f64)>>,
-    smooth_fine: std::sync::Arc<Vec<(f64, f64)>>,
+    fine: std::sync::Arc<Vec<(T, T)>>,
+    smooth_fine: std::sync::Arc<Vec<(T, T)>>,
 }
 
-impl Tables {
+impl<T: Scalar + CachedRules> Tables<T> {
     /// Tables for the half-plane `half_plane` (units c1 = 1) and kappa = c1 dt/dx.
-    pub fn new(half_plane: HalfPlane<f64>, kappa: f64) -> Result<Self> {
+    pub fn new(half_plane: HalfPlane<T>, kappa: T) -> Result<Self> {
         Ok(Tables {
             kappa,
             half_plane,
@@ -69,20 +70,20 @@ impl Tables {
             xi_err: vec![0.0],
             a: Vec::new(),
             err: 0.0,
-            fine: gauss_legendre_rule::<f64>(RULE_FINE, 53).map_err(lamb::LambError::from)?,
-            smooth_fine: gauss_legendre_rule::<f64>(SMOOTH_FINE, 53)
+            fine: gauss_legendre_rule::<T>(RULE_FINE, T::BITS).map_err(lamb::LambError::from)?,
+            smooth_fine: gauss_legendre_rule::<T>(SMOOTH_FINE, T::BITS)
                 .map_err(lamb::LambError::from)?,
         })
     }
 
     /// The half-plane.
-    pub fn half_plane(&self) -> &HalfPlane<f64> {
+    pub fn half_plane(&self) -> &HalfPlane<T> {
         &self.half_plane
     }
 
     /// The clustered and the smooth pieces' finer Gauss-Legendre rules on [-1, 1], shared with
     /// the march's shape correction of the free edge.
-    pub(crate) fn shape_rules(&self) -> ShapeRules<'_> {
+    pub(crate) fn shape_rules(&self) -> ShapeRules<'_, T> {
         (&self.fine, &self.smooth_fine)
     }
 
@@ -93,7 +94,7 @@ impl Tables {
 
     /// Xi(X, T) (dx = 1) in closed form (`lamb::HalfPlane::cell_mean_primitive_zz`) and its
     /// absolute error estimate.
-    fn xi_at(&self, x: f64, t: f64) -> Result<(f64, f64)> {
+    fn xi_at(&self, x: T, t: T) -> Result<(T, f64)> {
         let e = self.half_plane.cell_mean_primitive_zz(&x, &t)?;
         Ok((e.value, e.err))
     }
@@ -111,13 +112,13 @@ impl Tables {
             if have >= width {
                 continue;
             }
-            let t = l as f64 * self.kappa;
+            let t = self.kappa * l as f64;
             let mut worst = self.xi_err[l];
             for j in have..width {
                 let (v, e) = if l == 0 || j == 0 {
-                    (0.0, 0.0)
+                    (T::of(0.0), 0.0)
                 } else {
-                    self.xi_at(j as f64, t)?
+                    self.xi_at(T::of(j as f64), t)?
                 };
                 worst = worst.max(e);
                 self.xi[l].push(v);
@@ -137,14 +138,14 @@ impl Tables {
             for k in have..=kmax {
                 // mean over the receiver cell k of the displacement due to the source cell 0:
                 // Xi(k + 1) - 2 Xi(k) + Xi(k - 1), Xi even in X
-                let d2 = |row: &Vec<f64>| -> f64 {
+                let d2 = |row: &Vec<T>| -> T {
                     let left = if k == 0 { row[1] } else { row[k - 1] };
-                    row[k + 1] - 2.0 * row[k] + left
+                    row[k + 1] - row[k] * 2.0 + left
                 };
                 // causality: nothing reaches cell k by t_{l+1} when its nearest point is
                 // beyond c1 t_{l+1} (the differences of Xi would leave rounding there)
                 let v = if k > self.reach_at(l) {
-                    0.0
+                    T::of(0.0)
                 } else {
                     d2(&self.xi[l + 1]) - d2(&self.xi[l])
                 };
@@ -158,11 +159,11 @@ impl Tables {
     /// receiver cell k only if the cells' nearest points are closer than c1 t_{l+1}
     /// (k - 1 < (l + 1) kappa). At l = 0 it is the half-bandwidth of the step's system.
     pub fn reach_at(&self, l: usize) -> usize {
-        ((l + 1) as f64 * self.kappa).ceil() as usize
+        ((l + 1) as f64 * self.kappa.to_f64()).ceil() as usize
     }
 
     /// The row a(., l) (dx = 1), available up to the k given to [`Tables::ensure`].
-    pub fn row(&self, l: usize) -> &[f64] {
+    pub fn row(&self, l: usize) -> &[T] {
         &self.a[l]
     }
 }
@@ -479,5 +480,63 @@ mod tests {
             }
             assert!(positive_definite(s, n), "kappa = {kappa}");
         }
+    }
+
+    /// The tables in double-double against the same coefficients from the Lamb crate's Xi on
+    /// MPFR at 200 bits (a second precision), and the f64 tables against them at f64's
+    /// rounding: nu = 0.25, kappa = 2, the lags and offsets of a short march.
+    #[test]
+    fn double_double_tables_agree_with_mpfr() {
+        use complexfn::{Dd, Real};
+        use rug::Float;
+        let bits = 200;
+        let nu = 0.25;
+        let hp_mp = HalfPlane::from_poisson(Float::with_val(bits, nu)).unwrap();
+        let kappa = 2.0;
+        let xi = |j: usize, l: usize| -> Float {
+            if j == 0 || l == 0 {
+                return Float::with_val(bits, 0);
+            }
+            let (x, t) = (
+                Float::with_val(bits, j),
+                Float::with_val(bits, l as f64 * kappa),
+            );
+            hp_mp.cell_mean_primitive_zz(&x, &t).unwrap().value
+        };
+        let d2 = |k: usize, l: usize| -> Float {
+            let left = if k == 0 { xi(1, l) } else { xi(k - 1, l) };
+            xi(k + 1, l) - Float::with_val(bits, 2) * xi(k, l) + left
+        };
+        let (kmax, lmax) = (12, 6);
+        let mut dd =
+            Tables::new(HalfPlane::from_poisson(Dd::of(nu)).unwrap(), Dd::of(kappa)).unwrap();
+        dd.ensure(kmax, lmax).unwrap();
+        let mut f = Tables::new(HalfPlane::from_poisson(nu).unwrap(), kappa).unwrap();
+        f.ensure(kmax, lmax).unwrap();
+        let (mut worst_dd, mut worst_f) = (0.0f64, 0.0f64);
+        for l in 0..=lmax {
+            for k in 0..=kmax {
+                let want = if k > f.reach_at(l) {
+                    Float::with_val(bits, 0)
+                } else {
+                    d2(k, l + 1) - d2(k, l)
+                };
+                let got = dd.row(l)[k].to_mpfr(bits);
+                worst_dd = worst_dd.max((got - &want).abs().to_f64());
+                worst_f = worst_f.max((f.row(l)[k] - want.to_f64()).abs());
+            }
+        }
+        // the coefficients are of order 0.1 to 1
+        assert!(worst_dd < 1e-28, "double-double against MPFR: {worst_dd:e}");
+        assert!(worst_f < 1e-13, "f64 against MPFR: {worst_f:e}");
+        assert!(
+            dd.error() < 1e-25,
+            "double-double stated error {:e}",
+            dd.error()
+        );
+        eprintln!(
+            "largest differences: double-double {worst_dd:.1e} (stated {:.1e}), f64 {worst_f:.1e}",
+            dd.error()
+        );
     }
 }
