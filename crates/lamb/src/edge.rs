@@ -17,7 +17,7 @@
 //! (c > 0, gap >= 0) admits exactly the exponent with G > 0, a prescribed edge (the paper's
 //! eq (4)) the lower one.
 
-use complexfn::Cx;
+use complexfn::{Cx, Real};
 
 use crate::error::{invalid, short, Result};
 use crate::half_plane::HalfPlane;
@@ -71,12 +71,12 @@ impl EdgeLaw {
 
 /// One local solution p ~ c d^lambda at the edge.
 #[derive(Clone, Debug, PartialEq)]
-pub struct LocalSolution {
+pub struct LocalSolution<T = f64> {
     /// The exponent lambda in (-1, 1).
-    pub lambda: f64,
+    pub lambda: T,
     /// G: the gap outside the contact grows like (c/mu) G x^(lambda + 1) (0 when the relation
     /// is local, D > c1: the gap then opens with the profile's own slope).
-    pub gap_coefficient: f64,
+    pub gap_coefficient: T,
     /// Whether a free edge admits it (c > 0 with a non-negative gap: G > 0, or a local
     /// relation).
     pub signorini_admissible: bool,
@@ -84,52 +84,54 @@ pub struct LocalSolution {
 
 /// The local behaviour of the contact pressure at an edge moving at a given speed.
 #[derive(Clone, Debug, PartialEq)]
-pub struct EdgeBehaviour {
+pub struct EdgeBehaviour<T = f64> {
     /// D/c1.
-    pub speed_over_c1: f64,
+    pub speed_over_c1: T,
     /// The speed range.
     pub range: SpeedRange,
     /// The slope symbol S+ (units 1/mu), as (re, im).
-    pub slope_symbol: (f64, f64),
+    pub slope_symbol: (T, T),
     /// The admissible local solutions, exponents ascending.
-    pub solutions: Vec<LocalSolution>,
+    pub solutions: Vec<LocalSolution<T>>,
     /// The law.
     pub law: EdgeLaw,
     /// The exponent the law selects.
-    pub selected: f64,
+    pub selected: T,
     /// For D > c1: the edge pressure per unit profile slope at the edge, p(b) = f'(b) times
     /// this (units mu); `None` otherwise.
-    pub jump_per_slope: Option<f64>,
+    pub jump_per_slope: Option<T>,
 }
 
 /// Relative distance from c_R, c2 and c1 below which a speed is refused.
 pub const SPEED_GUARD: f64 = 1e-9;
 
-impl HalfPlane<f64> {
+impl<T: Real> HalfPlane<T> {
     /// The local behaviour of the contact pressure at an edge moving at D = `speed_over_c1`
-    /// c1 (an expanding contact, frictionless), with the exponent `law` selects.
-    /// `docs/edge.md`; the second paper's eqs (9)-(10).
+    /// c1 (an expanding contact, frictionless), with the exponent `law` selects, at the
+    /// half-plane's precision. `docs/edge.md`; the second paper's eqs (9)-(10).
     ///
     /// Errors: D not finite or D <= 0, and D within a relative 1e-9 of c_R, c2 or c1 (the
     /// exponents jump or the symbol is singular there).
-    pub fn edge_behaviour(&self, speed_over_c1: f64, law: EdgeLaw) -> Result<EdgeBehaviour> {
+    pub fn edge_behaviour(&self, speed_over_c1: T, law: EdgeLaw) -> Result<EdgeBehaviour<T>> {
         let d = speed_over_c1;
-        let (m, sr) = (*self.m(), *self.s_r());
+        let (m, sr) = (self.m().clone(), self.s_r().clone());
         let range_text = || {
             format!(
                 "(0, inf) except c_R/c1 = {}, c2/c1 = {} and 1",
-                short(sr),
-                short(m)
+                short(sr.to_f64()),
+                short(m.to_f64())
             )
         };
+        let refuse = |d: &T| invalid("speed_over_c1", short(d.to_f64()), range_text());
         if !(d.is_finite() && d > 0.0) {
-            return Err(invalid("speed_over_c1", short(d), range_text()));
+            return Err(refuse(&d));
         }
-        if [sr, m, 1.0]
+        let one = d.one();
+        if [&sr, &m, &one]
             .iter()
-            .any(|c| (d - c).abs() <= SPEED_GUARD * c)
+            .any(|c| (d.clone() - *c).abs() <= (*c).clone() * SPEED_GUARD)
         {
-            return Err(invalid("speed_over_c1", short(d), range_text()));
+            return Err(refuse(&d));
         }
         let range = if d < sr {
             SpeedRange::SubRayleigh
@@ -141,60 +143,68 @@ impl HalfPlane<f64> {
             SpeedRange::Supersonic
         };
         // S+ = -xi K_yy(xi - i0): the imaginary part of xi only picks the side of the cuts
-        let xi = Cx::new(1.0 / d, -1e-300);
-        let kyy = Lamb::new(m).kernels(&xi)[0][0].clone();
+        let xi = Cx::new(one.clone() / &d, d.lit(-1e-300));
+        let kyy = Lamb::new(m.clone()).kernels(&xi)[0][0].clone();
         let s = -(xi * &kyy);
         // parts below rounding of |S+| are the trace of the side chosen, not of the physics
-        let size = s.re.hypot(s.im);
-        let clean = |v: f64| if v.abs() <= 1e-14 * size { 0.0 } else { v };
-        let (re, im) = (clean(s.re), clean(s.im));
+        // (the thresholds relative to the precision: 1e-14 and 1e-12 in f64)
+        let rel = d.epsilon().to_f64() / f64::EPSILON;
+        let size = s.re.clone().hypot(&s.im);
+        let clean = |v: T| {
+            if v.clone().abs() <= size.clone() * (1e-14 * rel) {
+                v.zero()
+            } else {
+                v
+            }
+        };
+        let (re, im) = (clean(s.re.clone()), clean(s.im.clone()));
         if !(re.is_finite() && im.is_finite()) {
-            return Err(invalid("speed_over_c1", short(d), range_text()));
+            return Err(refuse(&d));
         }
-        let pi = std::f64::consts::PI;
-        let local = im.abs() <= 1e-12 * re.abs();
+        let pi = d.pi();
+        let local = im.clone().abs() <= re.clone().abs() * (1e-12 * rel);
         let solutions = if local {
             vec![LocalSolution {
-                lambda: 0.0,
-                gap_coefficient: 0.0,
+                lambda: d.zero(),
+                gap_coefficient: d.zero(),
                 signorini_admissible: true,
             }]
         } else {
-            let mut low = -im.atan2(re) / pi;
+            let mut low = -(im.clone().atan2(&re) / &pi);
             while low >= 0.0 {
                 low -= 1.0;
             }
             while low <= -1.0 {
                 low += 1.0;
             }
-            [low, low + 1.0]
+            [low.clone(), low + 1.0]
                 .into_iter()
                 .map(|lambda| {
-                    let g = im / ((lambda + 1.0) * (pi * lambda).sin());
+                    let g = im.clone() / ((lambda.clone() + 1.0) * (pi.clone() * &lambda).sin());
                     LocalSolution {
+                        signorini_admissible: g > 0.0,
                         lambda,
                         gap_coefficient: g,
-                        signorini_admissible: g > 0.0,
                     }
                 })
-                .collect()
+                .collect::<Vec<_>>()
         };
         let selected = match law {
-            EdgeLaw::Kinematic => solutions[0].lambda,
+            EdgeLaw::Kinematic => solutions[0].lambda.clone(),
             EdgeLaw::Signorini => solutions
                 .iter()
                 .find(|s| s.signorini_admissible)
-                .map(|s| s.lambda)
-                .ok_or_else(|| invalid("speed_over_c1", short(d), range_text()))?,
+                .map(|s| s.lambda.clone())
+                .ok_or_else(|| refuse(&d))?,
         };
         Ok(EdgeBehaviour {
-            speed_over_c1: d,
             range,
-            slope_symbol: (re, im),
+            slope_symbol: (re.clone(), im),
             solutions,
             law,
             selected,
-            jump_per_slope: local.then(|| -1.0 / re),
+            jump_per_slope: local.then(|| -(one / &re)),
+            speed_over_c1: d,
         })
     }
 }

@@ -177,3 +177,66 @@ fn bad_speeds_are_refused_with_the_parameter_named() {
         assert!(e.to_string().contains("speed_over_c1"), "{e}");
     }
 }
+
+/// The exponents and gap coefficients at the precision of the half-plane: in double-double
+/// and on MPFR at 200 bits against the closed forms evaluated on MPFR (sub-Rayleigh: lambda =
+/// -1/2, 1/2, S+ = -i sqrt(1 - D^2) D^2/(c2^2 R(D)); transonic: lambda = -theta/pi with
+/// tan theta = (2 - q)^2/(4 sqrt(1 - D^2) sqrt(q - 1)), q = D^2/c2^2).
+#[test]
+fn exponents_and_gaps_at_extended_precision() {
+    use complexfn::{Dd, Real};
+    use rug::Float;
+    let bits = 200;
+    let f = |x: f64| Float::with_val(bits, x);
+    for nu in [0.25, 0.3] {
+        let hp_mp = HalfPlane::from_poisson(f(nu)).unwrap();
+        let hp_dd = HalfPlane::from_poisson(Dd::from_f64(nu)).unwrap();
+        let m = hp_mp.m().clone();
+        for d in [0.1, 0.3, 0.45, 0.7, 0.9] {
+            let dm = f(d);
+            let q = dm.clone() * &dm / (m.clone() * &m);
+            let one = f(1.0);
+            let a1 = (one.clone() - dm.clone() * &dm).abs().sqrt();
+            let e_mp = hp_mp
+                .edge_behaviour(dm.clone(), EdgeLaw::Kinematic)
+                .unwrap();
+            let e_dd = hp_dd
+                .edge_behaviour(Dd::from_f64(d), EdgeLaw::Kinematic)
+                .unwrap();
+            let lam_mp = e_mp.selected.clone();
+            let want_lambda = if e_mp.range == SpeedRange::SubRayleigh {
+                // R(D) and the symbol's closed form
+                let r = (f(2.0) - q.clone()).square()
+                    - f(4.0) * a1.clone() * (one.clone() - q.clone()).sqrt();
+                let im = -(a1.clone() * &dm * &dm / (m.clone() * &m * &r));
+                let diff = (e_mp.slope_symbol.1.clone() - &im).abs().to_f64();
+                assert!(
+                    diff < 1e-55 * im.to_f64().abs(),
+                    "nu {nu}, D {d}: S+ off by {diff:e}"
+                );
+                f(-0.5)
+            } else {
+                let theta = ((f(2.0) - q.clone()).square()
+                    / (f(4.0) * a1.clone() * (q.clone() - one.clone()).sqrt()))
+                .atan();
+                -(theta / Float::with_val(bits, rug::float::Constant::Pi))
+            };
+            let off = (lam_mp.clone() - &want_lambda).abs().to_f64();
+            assert!(off < 1e-55, "nu {nu}, D {d}: MPFR exponent off by {off:e}");
+            let off_dd = (e_dd.selected.to_mpfr(bits) - &want_lambda).abs().to_f64();
+            assert!(
+                off_dd < 1e-30,
+                "nu {nu}, D {d}: double-double exponent off by {off_dd:e}"
+            );
+            let (g_mp, g_dd) = (
+                e_mp.solutions[0].gap_coefficient.clone(),
+                e_dd.solutions[0].gap_coefficient.to_mpfr(bits),
+            );
+            let rel = ((g_dd - &g_mp) / &g_mp).abs().to_f64();
+            assert!(
+                rel < 1e-29,
+                "nu {nu}, D {d}: double-double gap off by {rel:e}"
+            );
+        }
+    }
+}
