@@ -3,11 +3,19 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use clap::Args;
+use complexfn::{Dd, Real};
+use impact::scalar::Scalar;
 use impact::{
     Drive, EdgeLaw, ImpactCase, Profile, ShellStriker, Solution, Striker, StrikerMaterial,
     Value as Est,
 };
 use serde_json::{json, Map, Value};
+
+use crate::cli::num;
+
+/// The most digits `--digits` gives: the march runs in double-double (about 32 digits) above
+/// f64.
+pub const MAX_DIGITS: u32 = 30;
 
 /// Arguments of `impact run`.
 #[derive(Args, Debug)]
@@ -72,6 +80,12 @@ pub struct RunArgs {
     /// JSON output (default: CSV with `#` headers).
     #[arg(long)]
     json: bool,
+    /// Significant digits of the reported values (1 to 30): the march in double-double,
+    /// the discrete solution of the same grids to that many digits (regression data for the
+    /// scheme; the error estimates stay those of the discretisation). Rigid strikers; the
+    /// inputs are taken as their nearest doubles. Omit for f64.
+    #[arg(long)]
+    digits: Option<u32>,
 }
 
 type R<T> = std::result::Result<T, String>;
@@ -376,15 +390,37 @@ pub fn case(a: &RunArgs) -> R<ImpactCase> {
     Ok(c)
 }
 
-fn est(v: &Est) -> (Value, Value) {
-    (
-        json!(v.value),
-        v.err.map(|e| json!(e)).unwrap_or(Value::Null),
-    )
+/// How the report writes a value: f64 as it is, or to a number of significant digits.
+#[derive(Clone, Copy)]
+struct Digits(Option<usize>);
+
+impl Digits {
+    fn of<T: Scalar>(self, x: T) -> Value {
+        match self.0 {
+            None => json!(x.to_f64()),
+            Some(d) => num(&x.to_decimal(d)),
+        }
+    }
+    fn all<T: Scalar>(self, xs: &[T]) -> Value {
+        Value::Array(xs.iter().map(|&x| self.of(x)).collect())
+    }
+    fn est<T: Scalar>(self, v: &Est<T>) -> (Value, Value) {
+        (
+            self.of(v.value),
+            v.err.map(|e| json!(e)).unwrap_or(Value::Null),
+        )
+    }
 }
 
-/// The report as JSON.
-pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
+/// The report as JSON (the values to `digits` significant digits, or as f64).
+fn report<T: Scalar>(
+    a: &RunArgs,
+    sol: &Solution<T>,
+    version: &str,
+    digits: Option<usize>,
+) -> R<Value> {
+    let dg = Digits(digits);
+    let est = |v: &Est<T>| dg.est(v);
     let (rows, orders) = sol.history();
     let driven = !matches!(sol.case.drive, Drive::Free { .. });
     let hdot_key = if driven {
@@ -416,13 +452,19 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
     }
     out.insert("profile".into(), json!(sol.case.profile.label()));
     out.insert("poisson".into(), json!(sol.case.poisson));
-    out.insert("c2_over_c1".into(), json!(sol.m));
-    out.insert("cR_over_c1".into(), json!(sol.s_r));
+    out.insert("c2_over_c1".into(), dg.of(sol.m));
+    out.insert("cR_over_c1".into(), dg.of(sol.s_r));
+    if let Some(d) = digits {
+        out.insert(
+            "precision".into(),
+            json!({"digits": d, "arithmetic": "double-double"}),
+        );
+    }
     out.insert(
         "grid".into(),
         json!({
-            "dx_over_R": sol.runs[0].dx,
-            "c1dt_over_R": sol.runs[0].dt,
+            "dx_over_R": dg.of(sol.runs[0].dx),
+            "c1dt_over_R": dg.of(sol.runs[0].dt),
             "kappa": sol.case.kappa,
             "levels": sol.runs.len(),
             "edge_cell": if sol.case.edge_model { "model" } else { "whole" },
@@ -467,24 +509,13 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
                 .collect(),
         );
     }
-    if let Some(parts) = sol.shell_energy_history(&rows) {
-        let parts = parts.map_err(|e| e.to_string())?;
-        col(
-            "striker_strain_energy_over_rho_c1sq_Rsq",
-            parts.iter().map(|p| est(&p.0)).collect(),
-        );
-        col(
-            "striker_vibration_energy_over_rho_c1sq_Rsq",
-            parts.iter().map(|p| est(&p.1)).collect(),
-        );
-    }
     out.insert(
         "c1t_over_R".into(),
-        Value::Array(rows.iter().map(|r| json!(r.t)).collect()),
+        Value::Array(rows.iter().map(|r| dg.of(r.t)).collect()),
     );
     out.insert(
         "bdot_over_c1".into(),
-        Value::Array(rows.iter().map(|r| json!(r.bdot)).collect()),
+        Value::Array(rows.iter().map(|r| dg.of(r.bdot)).collect()),
     );
     out.insert(
         "stage".into(),
@@ -498,13 +529,13 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
     if let Some((f, t)) = sol.peak_force() {
         out.insert(
             "peak_force".into(),
-            json!({"force_over_rho_c1sq_R": f, "c1t_over_R": t}),
+            json!({"force_over_rho_c1sq_R": dg.of(f), "c1t_over_R": dg.of(t)}),
         );
     }
     out.insert(
         "separation_c1t_over_R".into(),
         match sol.separation() {
-            Some(s) => json!({"value": s.value, "error_estimate": s.err}),
+            Some(s) => json!({"value": dg.of(s.value), "error_estimate": s.err}),
             None => Value::Null,
         },
     );
@@ -518,9 +549,9 @@ pub fn report(a: &RunArgs, sol: &Solution, version: &str) -> R<Value> {
             }
             if let Some(prof) = sol.pressure_profile(t) {
                 list.push(json!({
-                    "c1t_over_R": prof.t,
-                    "x_over_R": prof.x,
-                    "p_over_rho_c1sq": prof.p,
+                    "c1t_over_R": dg.of(prof.t),
+                    "x_over_R": dg.all(&prof.x),
+                    "p_over_rho_c1sq": dg.all(&prof.p),
                     "error_estimate": prof.err,
                 }));
             }
@@ -615,11 +646,54 @@ pub fn run(a: &RunArgs, version: &str) -> R<Value> {
         indicatif::ProgressStyle::with_template("{bar:40} {percent}% {elapsed}")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
-    let sol = c
-        .solve(|f| bar.set_position((f * 1000.0) as u64))
-        .map_err(|e| e.to_string())?;
+    let progress = |f: f64| bar.set_position((f * 1000.0) as u64);
+    let v = match a.digits {
+        None => {
+            let sol = c.solve(progress).map_err(|e| e.to_string())?;
+            let mut v = report(a, &sol, version, None)?;
+            shell_energy_columns(&sol, &mut v)?;
+            v
+        }
+        Some(d) if (1..=MAX_DIGITS).contains(&d) => {
+            let sol = c.solve_at::<Dd>(progress).map_err(|e| e.to_string())?;
+            report(a, &sol, version, Some(d as usize))?
+        }
+        Some(d) => {
+            return Err(format!(
+                "invalid --digits {d}: admissible range is 1..={MAX_DIGITS} (the march runs in double-double above f64)"
+            ))
+        }
+    };
     bar.finish_and_clear();
-    report(a, &sol, version)
+    Ok(v)
+}
+
+/// The shell striker's strain and vibration energies with their estimates, added to the
+/// report's columns (f64: the shell runs in f64 only).
+fn shell_energy_columns(sol: &Solution, v: &mut Value) -> R<()> {
+    let (rows, _) = sol.history();
+    let Some(parts) = sol.shell_energy_history(&rows) else {
+        return Ok(());
+    };
+    let parts = parts.map_err(|e| e.to_string())?;
+    let Value::Object(out) = v else {
+        return Ok(());
+    };
+    for (key, pick) in [
+        ("striker_strain_energy_over_rho_c1sq_Rsq", 0),
+        ("striker_vibration_energy_over_rho_c1sq_Rsq", 1),
+    ] {
+        let vals: Vec<&Est> = parts
+            .iter()
+            .map(|p| if pick == 0 { &p.0 } else { &p.1 })
+            .collect();
+        let (v, e): (Vec<Value>, Vec<Value>) = vals.iter().map(|x| Digits(None).est(*x)).unzip();
+        out.insert(key.into(), Value::Array(v));
+        if let Some(Value::Object(errs)) = out.get_mut("error_estimate") {
+            errs.insert(key.into(), Value::Array(e));
+        }
+    }
+    Ok(())
 }
 
 /// Whether JSON output was asked for.

@@ -570,3 +570,90 @@ fn run_deformable_strikers() {
     assert_eq!(code, 2);
     assert!(err.contains("--c1"), "{err}");
 }
+
+/// `impact run --digits`: the march in double-double, every value printed to the digits asked
+/// for, the same solution as the f64 run to f64's rounding (with the same error estimates),
+/// labelled; more digits than double-double holds, or a deformable striker, refused.
+#[test]
+fn run_digits_prints_the_double_double_march() {
+    let mut args = RUN_BASE.to_vec();
+    args.extend([
+        "--end",
+        "c1t/R=1",
+        "--dx",
+        "0.02",
+        "--pressure-at",
+        "c1t/R=0.8",
+    ]);
+    let f = json(&args);
+    let mut dd_args = args.clone();
+    dd_args.extend(["--digits", "30"]);
+    let d = json(&dd_args);
+    assert_eq!(d["precision"]["digits"], 30);
+    assert_eq!(d["precision"]["arithmetic"], "double-double");
+    assert!(f.get("precision").is_none());
+    // the significant digits of a printed number
+    let significant = |v: &Value| -> String {
+        v.to_string()
+            .split(['e', 'E'])
+            .next()
+            .unwrap()
+            .chars()
+            .filter(|c| c.is_ascii_digit())
+            .skip_while(|c| *c == '0')
+            .collect()
+    };
+    let digits = |v: &Value| significant(v).len();
+    for key in [
+        "h_over_R",
+        "b_over_R",
+        "force_over_rho_c1sq_R",
+        "c1t_over_R",
+    ] {
+        let (a, b) = (f[key].as_array().unwrap(), d[key].as_array().unwrap());
+        assert_eq!(a.len(), b.len(), "{key}");
+        for (x, y) in a.iter().zip(b) {
+            assert_eq!(digits(y), 30, "{key}: {y}");
+            let (x, y) = (num(x), num(y));
+            assert!(
+                (x - y).abs() <= 1e-12 * x.abs().max(1e-6),
+                "{key}: {x} against {y}"
+            );
+        }
+        // the error estimates are the discretisation's, the same in both
+        if let (Some(ea), Some(eb)) = (
+            f["error_estimate"][key].as_array(),
+            d["error_estimate"][key].as_array(),
+        ) {
+            assert_eq!(ea.len(), eb.len(), "{key}");
+            for (x, y) in ea.iter().zip(eb) {
+                assert!(
+                    (num(x) - num(y)).abs() <= 1e-6 * num(x).abs() + 1e-15,
+                    "{key}"
+                );
+            }
+        }
+    }
+    // the inputs are their decimal values: the first report time, c1 dt/R = 4 kappa dx on
+    // the coarsest grid, is 0.16 to every printed digit
+    assert_eq!(
+        significant(&d["c1t_over_R"][0]),
+        format!("16{}", "0".repeat(28))
+    );
+    let p = d["pressure"][0]["p_over_rho_c1sq"].as_array().unwrap();
+    assert!(p.iter().all(|v| digits(v) == 30));
+    // refusals, one line each
+    for (extra, word) in [
+        (vec!["--digits", "40"], "--digits"),
+        (vec!["--digits", "0"], "--digits"),
+    ] {
+        let mut a = args.clone();
+        a.retain(|x| *x != "--json");
+        a.extend(extra);
+        let (code, out, err) = impact(&a);
+        assert_eq!(code, 2, "{a:?}");
+        assert!(out.is_empty());
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(word), "{err}");
+    }
+}

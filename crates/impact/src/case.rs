@@ -5,11 +5,14 @@
 //! pressure over rho c1^2, force per unit length over rho c1^2 R, energies over rho c1^2 R^2,
 //! the striker's mass per unit length as m0/(rho R^2).
 
+use complexfn::quadrature::CachedRules;
+use complexfn::Real;
 use lamb::HalfPlane;
 
 use crate::error::{invalid, ImpactError, Result};
 use crate::march::{EdgeLaw, March, Motion, StepState};
 use crate::profile::Profile;
+use crate::scalar::Scalar;
 use crate::striker::{shell_energies, Ring, Striker};
 use crate::tables::Tables;
 
@@ -267,18 +270,45 @@ impl ImpactCase {
         }
     }
 
-    /// Solves the case on `levels` grids (dx, 2 dx, ...). `progress` is called with the
-    /// fraction done.
-    pub fn solve(&self, mut progress: impl FnMut(f64)) -> Result<Solution> {
+    /// Solves the case on `levels` grids (dx, 2 dx, ...) in f64. `progress` is called with
+    /// the fraction done.
+    pub fn solve(&self, progress: impl FnMut(f64)) -> Result<Solution> {
+        self.solve_at::<f64>(progress)
+    }
+
+    /// Solves the case as [`ImpactCase::solve`] at the precision T (`crate::scalar`: f64 or
+    /// the double-double, about 32 digits): the discrete solution of the same grids to that
+    /// precision (`docs/impact.md`, section 7). Above f64 the striker must be rigid and the
+    /// profile one of the closed forms or a table (a user's function is evaluated in f64).
+    pub fn solve_at<T: Scalar + CachedRules>(
+        &self,
+        mut progress: impl FnMut(f64),
+    ) -> Result<Solution<T>> {
         self.validate()?;
-        let hp = HalfPlane::from_poisson(self.poisson)?;
+        let extended = T::BITS > 53;
+        if extended && !matches!(self.striker, Striker::Rigid) {
+            return Err(invalid(
+                "striker",
+                self.striker.name(),
+                "rigid: above f64 precision only the rigid striker is solved (the elastic and shell strikers' coefficients are f64)",
+            ));
+        }
+        if extended && !self.profile.exact_at_every_precision() {
+            return Err(invalid(
+                "profile",
+                self.profile.label(),
+                "a closed form or a table: above f64 precision a user's function would be evaluated in f64",
+            ));
+        }
+        let hp = HalfPlane::from_poisson(T::input(self.poisson))?;
         let m = *hp.m();
         let s_r = *hp.s_r();
-        let mut tables = Tables::new(hp, self.kappa)?;
+        let mut tables = Tables::new(hp, T::input(self.kappa))?;
+        let m64 = m.to_f64();
         // the elastic striker's tables are normalised like the half-plane's and serve every
         // level; the shell's depend on dx and are built per level
         let mut shared = match self.striker {
-            Striker::Elastic(_) => self.striker.compliance(m, self.dx, self.kappa)?,
+            Striker::Elastic(_) => self.striker.compliance(m64, self.dx, self.kappa)?,
             _ => None,
         };
         let motion = match &self.drive {
@@ -286,7 +316,7 @@ impl ImpactCase {
                 mass_ratio,
                 v0_over_c1,
             } => Motion::Free {
-                mass: mass_ratio / (m * m),
+                mass_ratio: *mass_ratio,
                 v0: *v0_over_c1,
             },
             Drive::Speed(v) => Motion::DrivenSpeed(*v),
@@ -298,28 +328,34 @@ impl ImpactCase {
         let mut done = 0.0;
         for level in (0..self.levels).rev() {
             let mut dx = self.dx * (1 << level) as f64;
+            // the cell width at the march's precision (the input dx times 2^level)
+            let mut grid_dx = T::input(self.dx) * (1u64 << level) as f64;
             if let Profile::Flat { half_width } = self.profile {
                 // cells 0..=N exactly cover [0, a]
                 let cells = (half_width / dx - 0.5).round().max(1.0);
                 dx = half_width / (cells + 0.5);
+                grid_dx = T::input(half_width) / (cells + 0.5);
             }
             let mut own = match self.striker {
-                Striker::Shell(_) => self.striker.compliance(m, dx, self.kappa)?,
+                Striker::Shell(_) => self.striker.compliance(m64, dx, self.kappa)?,
                 _ => None,
             };
             let march = March::new(
                 &mut tables,
-                own.as_mut().or(shared.as_mut()),
+                own.as_mut()
+                    .or(shared.as_mut())
+                    .and_then(|c| T::striker_rows(c)),
                 &self.profile,
                 &motion,
                 self.law,
-                dx,
-                self.kappa,
+                grid_dx,
+                T::input(self.kappa),
             )
-            .with_edge_gap_scale(self.edge_gap_scale(m));
+            .with_edge_gap_scale(self.edge_gap_scale(m64).map(T::of));
             // the nearest step to the end time, never past the striker model's validity
-            let valid = (self.striker.validity_end() / march.dt() + 1e-9).floor();
-            let nsteps = (self.end / march.dt()).round().min(valid) as usize;
+            let dt64 = march.dt().to_f64();
+            let valid = (self.striker.validity_end() / dt64 + 1e-9).floor();
+            let nsteps = (self.end / dt64).round().min(valid) as usize;
             let mut march = march.with_horizon(nsteps);
             let weight = 0.25f64.powi(level as i32) / total;
             for n in 0..nsteps {
@@ -342,7 +378,7 @@ impl ImpactCase {
                 .map(|c| c.error())
                 .unwrap_or(0.0);
             runs.push(Run {
-                dx,
+                dx: grid_dx,
                 dt,
                 steps,
                 separation,
@@ -356,7 +392,7 @@ impl ImpactCase {
             m,
             s_r,
             mass: match motion {
-                Motion::Free { mass, .. } => Some(mass),
+                Motion::Free { mass_ratio, .. } => Some(T::input(mass_ratio) / (m * m)),
                 _ => None,
             },
             runs,
@@ -364,17 +400,17 @@ impl ImpactCase {
     }
 }
 
-/// One grid's history.
+/// One grid's history, at the precision T.
 #[derive(Clone, Debug)]
-pub struct Run {
+pub struct Run<T = f64> {
     /// Cell width (units R).
-    pub dx: f64,
+    pub dx: T,
     /// Time step (units R/c1).
-    pub dt: f64,
+    pub dt: T,
     /// The steps.
-    pub steps: Vec<StepState>,
+    pub steps: Vec<StepState<T>>,
     /// Separation time (free striker), if any.
-    pub separation: Option<f64>,
+    pub separation: Option<T>,
     /// A bound of the error of the normalised influence coefficients used (quadrature of the
     /// half-plane's and an elastic striker's tables, truncation of a shell's modal sums).
     pub coefficient_error: f64,
@@ -392,9 +428,9 @@ pub const EDGE_WINDOW_STEPS: usize = 40;
 /// (`docs/impact.md`, section 4).
 pub const FORCE_WINDOW_STEPS: usize = 120;
 
-impl Run {
+impl<T: Scalar> Run<T> {
     /// Step n (time t_n = n dt, n >= 1), if the march reached it.
-    pub fn step(&self, n: usize) -> Option<&StepState> {
+    pub fn step(&self, n: usize) -> Option<&StepState<T>> {
         n.checked_sub(1).and_then(|i| self.steps.get(i))
     }
 
@@ -406,12 +442,12 @@ impl Run {
     /// the pressures set), which averages out the edge's phase error within its cell; where
     /// the window holds fewer than five edges, the edges of the two steps around t_n
     /// interpolated.
-    pub fn edge_at(&self, n: usize) -> Option<f64> {
+    pub fn edge_at(&self, n: usize) -> Option<T> {
         let s = self.step(n)?;
         if s.edge_time == s.t {
             return Some(s.b);
         }
-        let mid = |x: &StepState| x.edge_time != x.t && x.b > 0.0;
+        let mid = |x: &StepState<T>| x.edge_time != x.t && x.b > 0.0;
         self.crossing_fit(n, EDGE_WINDOW_STEPS, mid, |x| (x.edge_time, x.b))
             .or_else(|| self.edge_interpolated(n))
     }
@@ -426,9 +462,9 @@ impl Run {
         &self,
         n: usize,
         cap: usize,
-        eligible: impl Fn(&StepState) -> bool,
-        value: impl Fn(&StepState) -> (f64, f64),
-    ) -> Option<f64> {
+        eligible: impl Fn(&StepState<T>) -> bool,
+        value: impl Fn(&StepState<T>) -> (T, T),
+    ) -> Option<T> {
         let s = self.step(n)?;
         let ok = |m: usize| self.step(m).is_some_and(&eligible);
         if !ok(n) {
@@ -442,27 +478,30 @@ impl Run {
         while ok(last + 1) && last - n < cap {
             last += 1;
         }
-        let b = |m: usize| self.step(m).map_or(0.0, |x| x.b);
+        // the window (a choice of steps, taken in f64)
+        let (dx, dt) = (self.dx.to_f64(), self.dt.to_f64());
+        let b = |m: usize| self.step(m).map_or(0.0, |x| x.b.to_f64());
         let k = (n - first).min(last - n).min(5);
         let speed = if k > 0 {
-            ((b(n + k) - b(n - k)) / (2.0 * k as f64 * self.dt)).abs()
+            ((b(n + k) - b(n - k)) / (2.0 * k as f64 * dt)).abs()
         } else {
             0.0
         };
-        let steps = (EDGE_CROSSINGS * self.dx / (speed * self.dt)).min(cap as f64);
+        let steps = (EDGE_CROSSINGS * dx / (speed * dt)).min(cap as f64);
         let half = ((0.5 * steps) as usize).min(n - first).min(last - n);
         if half < 2 {
             return None;
         }
         // normal equations of a + c1 x + c2 x^2, x = (time - t_n)/width
-        let width = (half as f64 + 0.5) * self.dt;
-        let (mut m, mut r) = (vec![0.0f64; 9], [0.0f64; 3]);
+        let width = self.dt * (half as f64 + 0.5);
+        let zero = T::of(0.0);
+        let (mut m, mut r) = (vec![zero; 9], [zero; 3]);
         for j in n - half..=n + half {
             let (time, v) = value(self.step(j)?);
             let x = (time - s.t) / width;
-            let phi = [1.0, x, x * x];
+            let phi = [T::of(1.0), x, x * x];
             for i in 0..3 {
-                for (mij, pj) in m[3 * i..3 * i + 3].iter_mut().zip(&phi) {
+                for (mij, &pj) in m[3 * i..3 * i + 3].iter_mut().zip(&phi) {
                     *mij += phi[i] * pj;
                 }
                 r[i] += phi[i] * v;
@@ -476,7 +515,7 @@ impl Run {
     /// The edge at t_n interpolated between the edges of the steps around it by the times
     /// they stand for (`StepState::edge_time`; the last step's extrapolated from the two
     /// before).
-    pub fn edge_interpolated(&self, n: usize) -> Option<f64> {
+    pub fn edge_interpolated(&self, n: usize) -> Option<T> {
         let s = self.step(n)?;
         let (a, b) = match (
             self.step(n + 1),
@@ -500,24 +539,24 @@ impl Run {
     /// [`EDGE_CROSSINGS`] cell crossings (at most [`FORCE_WINDOW_STEPS`] steps, symmetric
     /// within the steps in contact); where that window holds fewer than five steps,
     /// [`Run::force_interpolated`].
-    pub fn force_at(&self, n: usize) -> Option<f64> {
+    pub fn force_at(&self, n: usize) -> Option<T> {
         let dt = self.dt;
         self.crossing_fit(
             n,
             FORCE_WINDOW_STEPS,
             |x| !x.pressure.is_empty(),
-            |x| (x.t - 0.5 * dt, x.force),
+            |x| (x.t - dt * 0.5, x.force),
         )
         .or_else(|| self.force_interpolated(n))
     }
 
     /// The force at t_n from the two steps around it (their forces stand for the middles of
     /// the steps): their mean, the last step's extrapolated from the two before it.
-    pub fn force_interpolated(&self, n: usize) -> Option<f64> {
+    pub fn force_interpolated(&self, n: usize) -> Option<T> {
         let f = |n: usize| self.step(n).map(|s| s.force);
         match (f(n), f(n + 1)) {
-            (Some(a), Some(b)) => Some(0.5 * (a + b)),
-            (Some(a), None) if n >= 2 => f(n - 1).map(|z| 1.5 * a - 0.5 * z),
+            (Some(a), Some(b)) => Some((a + b) * 0.5),
+            (Some(a), None) if n >= 2 => f(n - 1).map(|z| a * 1.5 - z * 0.5),
             (a, _) => a,
         }
     }
@@ -530,13 +569,13 @@ const ESTIMATE_SAFETY: f64 = 4.0;
 
 /// A pressure profile of the finest grid ([`Solution::pressure_profile`]).
 #[derive(Clone, Debug)]
-pub struct PressureProfile {
+pub struct PressureProfile<T = f64> {
     /// c1 t/R (the middle of the step).
-    pub t: f64,
+    pub t: T,
     /// The cell centres x/R.
-    pub x: Vec<f64>,
+    pub x: Vec<T>,
     /// The cells' mean pressures p/(rho c1^2).
-    pub p: Vec<f64>,
+    pub p: Vec<T>,
     /// Their error estimates (`None` with a single grid).
     pub err: Option<Vec<f64>>,
 }
@@ -545,17 +584,18 @@ pub struct PressureProfile {
 /// coarse cell k spans [(k ratio - ratio/2) dx, (k ratio + ratio/2) dx], so the fine cells at
 /// its two ends count half), from the fine cells' means `p` (cell j spanning
 /// [(j - 1/2) dx, (j + 1/2) dx], cell 0 centred on the axis, the profile even).
-pub fn coarse_means(p: &[f64], ratio: usize) -> Vec<f64> {
+pub fn coarse_means<T: Scalar>(p: &[T], ratio: usize) -> Vec<T> {
     let half = ratio / 2;
+    let zero = T::of(0.0);
     // the even extension p_-j = p_j, and nothing beyond the given cells
-    let at = |j: i64| p.get(j.unsigned_abs() as usize).copied().unwrap_or(0.0);
+    let at = |j: i64| p.get(j.unsigned_abs() as usize).copied().unwrap_or(zero);
     let n = p.len().div_ceil(half) / 2 + 1;
     (0..n)
         .map(|k| {
             let c = (k * ratio) as i64;
             let h = half as i64;
-            let inner: f64 = (c - h + 1..c + h).map(at).sum();
-            (inner + 0.5 * (at(c - h) + at(c + h))) / ratio as f64
+            let inner = (c - h + 1..c + h).map(at).fold(zero, |a, v| a + v);
+            (inner + (at(c - h) + at(c + h)) * 0.5) / ratio as f64
         })
         .collect()
 }
@@ -587,41 +627,41 @@ impl Stage {
 
 /// A value with its absolute error estimate (from refinement; `None` with one level).
 #[derive(Clone, Copy, Debug)]
-pub struct Value {
+pub struct Value<T = f64> {
     /// The finest grid's value.
-    pub value: f64,
+    pub value: T,
     /// Absolute error estimate.
     pub err: Option<f64>,
 }
 
 /// One row of the reported history (dimensionless).
 #[derive(Clone, Debug)]
-pub struct HistoryRow {
+pub struct HistoryRow<T = f64> {
     /// c1 t/R.
-    pub t: f64,
+    pub t: T,
     /// h/R.
-    pub h: Value,
+    pub h: Value<T>,
     /// (dh/dt)/c1.
-    pub hdot: Value,
+    pub hdot: Value<T>,
     /// b/R.
-    pub b: Value,
+    pub b: Value<T>,
     /// (db/dt)/c1 (central difference of b over the reporting interval).
-    pub bdot: f64,
+    pub bdot: T,
     /// The edge's speed range.
     pub stage: Stage,
     /// R(t)/(rho c1^2 R).
-    pub force: Value,
+    pub force: Value<T>,
     /// Striker kinetic energy over rho c1^2 R^2 (free striker).
-    pub kinetic: Option<Value>,
+    pub kinetic: Option<Value<T>>,
     /// Work done on the half-plane over rho c1^2 R^2, through the kernels.
-    pub work: Value,
+    pub work: Value<T>,
     /// The striker's surface displacement towards its interior at the contact point (mean over
     /// the central cell) over R; `None` for a rigid striker.
-    pub striker_deformation: Option<Value>,
+    pub striker_deformation: Option<Value<T>>,
     /// Energy taken up by the striker's deformation (its strain and vibration kinetic
     /// energy: the work of the contact pressure on its surface) over rho c1^2 R^2; `None`
     /// for a rigid striker.
-    pub striker_energy: Option<Value>,
+    pub striker_energy: Option<Value<T>>,
 }
 
 /// The observed convergence order of each quantity.
@@ -635,18 +675,18 @@ pub struct Orders {
     pub force: Option<f64>,
 }
 
-/// A solved case.
+/// A solved case, at the precision T.
 #[derive(Clone, Debug)]
-pub struct Solution {
+pub struct Solution<T = f64> {
     /// The inputs.
     pub case: ImpactCase,
     /// c2/c1.
-    pub m: f64,
+    pub m: T,
     /// c_R/c1.
-    pub s_r: f64,
-    mass: Option<f64>,
+    pub s_r: T,
+    mass: Option<T>,
     /// The runs, finest first.
-    pub runs: Vec<Run>,
+    pub runs: Vec<Run<T>>,
 }
 
 fn order(fine: &[f64], mid: &[f64], coarse: &[f64]) -> Option<f64> {
@@ -655,50 +695,56 @@ fn order(fine: &[f64], mid: &[f64], coarse: &[f64]) -> Option<f64> {
     (d1 > 0.0 && d2 > 0.0).then(|| (d2 / d1).log2())
 }
 
-impl Solution {
+impl<T: Scalar> Solution<T> {
     /// The reporting interval: the coarsest level's time step (its times are steps of every
     /// level).
-    pub fn report_dt(&self) -> f64 {
-        self.runs.last().map(|r| r.dt).unwrap_or(0.0)
+    pub fn report_dt(&self) -> T {
+        self.runs.last().map(|r| r.dt).unwrap_or(T::of(0.0))
     }
 
     /// Separation time c1 t/R of the finest grid, with the spread over the levels as its
     /// error estimate.
-    pub fn separation(&self) -> Option<Value> {
+    pub fn separation(&self) -> Option<Value<T>> {
         let s0 = self.runs[0].separation?;
         let err = self
             .runs
             .get(1)
             .and_then(|r| r.separation)
-            .map(|s| (s - s0).abs().max(self.runs[0].dt));
+            .map(|s| (s - s0).abs().max(self.runs[0].dt).to_f64());
         Some(Value { value: s0, err })
     }
 
-    fn kinetic(&self, v: f64) -> Option<f64> {
+    fn kinetic(&self, v: T) -> Option<T> {
         // (1/2) m0 v^2 in units mu R^2 -> over rho c1^2 R^2 = (1/m^2)
-        self.mass.map(|mass| 0.5 * mass * v * v * self.m * self.m)
+        self.mass.map(|mass| mass * v * v * self.m * self.m * 0.5)
     }
 
     /// The reported history with error estimates, and the observed orders.
-    pub fn history(&self) -> (Vec<HistoryRow>, Orders) {
+    pub fn history(&self) -> (Vec<HistoryRow<T>>, Orders) {
         let m2 = self.m * self.m;
         let dtr = self.report_dt();
         let fine = &self.runs[0];
-        let last_t = fine.steps.last().map(|s| s.t).unwrap_or(0.0);
-        let nrep = (last_t / dtr + 1e-9).floor() as usize;
-        let times: Vec<f64> = (1..=nrep).map(|i| i as f64 * dtr).collect();
+        let zero = T::of(0.0);
+        let last_t = fine.steps.last().map(|s| s.t).unwrap_or(zero);
+        let nrep = ((last_t / dtr).to_f64() + 1e-9).floor() as usize;
+        let times: Vec<T> = (1..=nrep).map(|i| dtr * i as f64).collect();
+        // the step of a run at a report time
+        let step_at = |r: &Run<T>, t: T| (t / r.dt).to_f64().round() as usize;
         // each quantity at step n (time t_n)
-        type Getter = fn(&Run, usize) -> Option<f64>;
-        let getters: [Getter; 6] = [
+        type Getter<T> = fn(&Run<T>, usize) -> Option<T>;
+        let getters: [Getter<T>; 6] = [
             |r, n| r.step(n).map(|s| s.h),
             |r, n| r.step(n).map(|s| s.v),
             |r, n| r.edge_at(n),
             |r, n| r.force_at(n),
-            |r, n| r.step(n).map(|s| s.ws.first().copied().unwrap_or(0.0)),
+            |r, n| {
+                r.step(n)
+                    .map(|s| s.ws.first().copied().unwrap_or(T::of(0.0)))
+            },
             |r, n| r.step(n).map(|s| s.striker_work),
         ];
-        // samples[q][level][i]
-        let samples: Vec<Vec<Vec<f64>>> = getters
+        // samples[q][level][i] (NaN where a level has no value)
+        let samples: Vec<Vec<Vec<T>>> = getters
             .iter()
             .map(|g| {
                 self.runs
@@ -706,15 +752,24 @@ impl Solution {
                     .map(|r| {
                         times
                             .iter()
-                            .map(|&t| g(r, (t / r.dt).round() as usize).unwrap_or(f64::NAN))
+                            .map(|&t| g(r, step_at(r, t)).unwrap_or(T::of(f64::NAN)))
                             .collect()
                     })
                     .collect()
             })
             .collect();
+        // their f64 values, for the orders and the estimates
+        let low: Vec<Vec<Vec<f64>>> = samples
+            .iter()
+            .map(|q| {
+                q.iter()
+                    .map(|l| l.iter().map(|v| v.to_f64()).collect())
+                    .collect()
+            })
+            .collect();
         let usable = |q: usize| -> usize {
             // times where every level has a value
-            samples[q]
+            low[q]
                 .iter()
                 .map(|l| l.iter().take_while(|v| v.is_finite()).count())
                 .min()
@@ -726,7 +781,7 @@ impl Solution {
                 if self.runs.len() < 3 {
                     return None;
                 }
-                let s = &samples[q];
+                let s = &low[q];
                 order(&s[0][..nuse], &s[1][..nuse], &s[2][..nuse])
             })
             .collect();
@@ -739,9 +794,10 @@ impl Solution {
             // difference may happen to be small at one time
             let mut d: f64 = 0.0;
             for j in i.saturating_sub(4)..(i + 5).min(nuse.max(i + 1)) {
-                d = d.max((samples[q][0][j] - samples[q][1][j]).abs());
+                // the differences in T, then rounded
+                d = d.max((samples[q][0][j] - samples[q][1][j]).abs().to_f64());
                 if let Some(c) = samples[q].get(2) {
-                    d = d.max(0.5 * (samples[q][1][j] - c[j]).abs());
+                    d = d.max(0.5 * (samples[q][1][j] - c[j]).abs().to_f64());
                 }
             }
             if !d.is_finite() {
@@ -756,11 +812,11 @@ impl Solution {
         };
         let mut rows = Vec::with_capacity(times.len());
         for (i, &t) in times.iter().enumerate() {
-            let st = &fine.steps[(t / fine.dt).round() as usize - 1];
-            let val = |q: usize, scale: f64| Value {
+            let st = &fine.steps[step_at(fine, t) - 1];
+            let val = |q: usize, scale: T| Value {
                 value: samples[q][0][i] * scale,
                 err: if i < nuse {
-                    est(q, i).map(|e| e * scale)
+                    est(q, i).map(|e| e * scale.to_f64().abs())
                 } else {
                     None
                 },
@@ -771,7 +827,7 @@ impl Solution {
                 if c > a {
                     (b(c) - b(a)) / (times[c] - times[a])
                 } else {
-                    0.0
+                    zero
                 }
             };
             let speed = bdot.abs();
@@ -784,12 +840,16 @@ impl Solution {
             } else {
                 Stage::SubRayleigh
             };
+            let one = T::of(1.0);
             let hdot_scale = match self.case.drive {
-                Drive::Free { v0_over_c1, .. } => 1.0 / v0_over_c1,
-                _ => 1.0,
+                Drive::Free { v0_over_c1, .. } => one / v0_over_c1,
+                _ => one,
             };
             let kinetic = self.kinetic(st.v).map(|k| {
-                let e = est(1, i).map(|dv| self.mass.unwrap() * st.v.abs() * dv * m2);
+                let e = match (est(1, i), self.mass) {
+                    (Some(dv), Some(mass)) => Some((mass * st.v.abs() * m2).to_f64() * dv),
+                    _ => None,
+                };
                 Value {
                     value: k,
                     err: if i < nuse { e } else { None },
@@ -801,12 +861,12 @@ impl Solution {
             };
             let deformable = !matches!(self.case.striker, Striker::Rigid);
             rows.push(HistoryRow {
-                striker_deformation: deformable.then(|| val(4, 1.0)),
+                striker_deformation: deformable.then(|| val(4, one)),
                 striker_energy: deformable.then(|| val(5, m2)),
                 t,
-                h: val(0, 1.0),
+                h: val(0, one),
                 hdot: val(1, hdot_scale),
-                b: val(2, 1.0),
+                b: val(2, one),
                 bdot,
                 stage,
                 force: val(3, m2),
@@ -827,7 +887,7 @@ impl Solution {
     /// Pressure profile p/(rho c1^2) of the finest grid's step whose middle is nearest to
     /// c1 t/R = `t` (a step's pressures stand for the middle of the step, `docs/impact.md`,
     /// section 3): (that time, the cell centres x/R, the pressures).
-    pub fn pressure_at(&self, t: f64) -> Option<(f64, Vec<f64>, Vec<f64>)> {
+    pub fn pressure_at(&self, t: f64) -> Option<(T, Vec<T>, Vec<T>)> {
         self.pressure_profile(t).map(|p| (p.t, p.x, p.p))
     }
 
@@ -839,13 +899,14 @@ impl Solution {
     /// plus what that comparison cannot see: the cell's second difference
     /// |p_j - (p_{j-1} + p_{j+1})/2| (a cell-to-cell oscillation, which the coarser cells
     /// average out) and its difference from the two steps' mean (a step-to-step one).
-    pub fn pressure_profile(&self, t: f64) -> Option<PressureProfile> {
+    pub fn pressure_profile(&self, t: f64) -> Option<PressureProfile<T>> {
         let fine = &self.runs[0];
-        let n = ((t / fine.dt + 0.5).round() as usize).clamp(1, fine.steps.len());
+        let n = ((t / fine.dt.to_f64() + 0.5).round() as usize).clamp(1, fine.steps.len());
         let st = fine.steps.get(n - 1)?;
         let m2 = self.m * self.m;
-        let x = (0..st.pressure.len()).map(|j| j as f64 * fine.dx).collect();
-        let p: Vec<f64> = st.pressure.iter().map(|v| v * m2).collect();
+        let x = (0..st.pressure.len()).map(|j| fine.dx * j as f64).collect();
+        let p: Vec<T> = st.pressure.iter().map(|&v| v * m2).collect();
+        let zero = T::of(0.0);
         let err = self.runs.get(1).and_then(|coarse| {
             // the coarse step m spans the fine steps 2m - 1 and 2m (at the end of a run with
             // an odd number of fine steps, the last whole pair: the difference of
@@ -857,14 +918,14 @@ impl Solution {
             let cs = coarse.step(m)?;
             let (a, b) = (fine.step(2 * m - 1)?, fine.step(2 * m)?);
             let len = a.pressure.len().max(b.pressure.len()).max(p.len());
-            let at = |v: &[f64], j: usize| v.get(j).copied().unwrap_or(0.0);
-            let pair: Vec<f64> = (0..len)
-                .map(|j| 0.5 * (at(&a.pressure, j) + at(&b.pressure, j)))
+            let at = |v: &[T], j: usize| v.get(j).copied().unwrap_or(zero);
+            let pair: Vec<T> = (0..len)
+                .map(|j| (at(&a.pressure, j) + at(&b.pressure, j)) * 0.5)
                 .collect();
             let agg = coarse_means(&pair, 2);
             let nc = agg.len().max(cs.pressure.len());
             let diff: Vec<f64> = (0..nc)
-                .map(|k| (at(&cs.pressure, k) - at(&agg, k)).abs() * m2)
+                .map(|k| ((at(&cs.pressure, k) - at(&agg, k)).abs() * m2).to_f64())
                 .collect();
             Some(
                 (0..p.len())
@@ -874,20 +935,23 @@ impl Solution {
                         let hi = (j.div_ceil(2) + 1).min(nc - 1);
                         let d = diff[lo..=hi].iter().fold(0.0, |a: f64, v| a.max(*v));
                         let left = if j == 0 { at(&p, 1) } else { p[j - 1] };
-                        let rough = (p[j] - 0.5 * (left + at(&p, j + 1))).abs();
-                        ESTIMATE_SAFETY * d + rough + (p[j] - pair[j] * m2).abs()
+                        let rough = (p[j] - (left + at(&p, j + 1)) * 0.5).abs();
+                        let step = (p[j] - pair[j] * m2).abs();
+                        ESTIMATE_SAFETY * d + (rough + step).to_f64()
                     })
                     .collect(),
             )
         });
         Some(PressureProfile {
-            t: st.t - 0.5 * fine.dt,
+            t: st.t - fine.dt * 0.5,
             x,
             p,
             err,
         })
     }
+}
 
+impl Solution<f64> {
     /// The shell striker's strain and vibration kinetic energy over rho c1^2 R^2 after each
     /// step of the finest grid, (c1 t/R, strain, kinetic), by the modal recursion of
     /// [`shell_energies`] (independent of the coefficient tables); `None` for other strikers.
@@ -962,14 +1026,16 @@ impl Solution {
         }
         Some(Ok(out))
     }
+}
 
+impl<T: Scalar> Solution<T> {
     /// Peak force over rho c1^2 R and its time, on the finest grid.
-    pub fn peak_force(&self) -> Option<(f64, f64)> {
+    pub fn peak_force(&self) -> Option<(T, T)> {
         let m2 = self.m * self.m;
         let run = &self.runs[0];
         (1..=run.steps.len())
             .filter_map(|n| run.force_at(n).map(|f| (f * m2, run.steps[n - 1].t)))
-            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .max_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal))
     }
 }
 

@@ -47,7 +47,7 @@ const MIN_WIDTH: usize = 8;
 
 /// A source of influence rows: the unscaled row a(., l) and its scale (the half-plane's tables,
 /// or a striker's compliance).
-pub(crate) trait KernelRows<T = f64> {
+pub trait KernelRows<T = f64> {
     /// Makes a(k, l) available for k <= kmax and l <= lmax.
     fn ensure_rows(&mut self, kmax: usize, lmax: usize) -> Result<()>;
     /// The row a(., l) and its scale.
@@ -143,7 +143,11 @@ impl<T: Scalar> HistorySum<T> {
 
     /// Records the pressures of the next step (cells 0, 1, ...) and adds the square it
     /// completes.
-    pub(crate) fn push(&mut self, kernel: &mut impl KernelRows<T>, p: &[T]) -> Result<()> {
+    pub(crate) fn push(
+        &mut self,
+        kernel: &mut (impl KernelRows<T> + ?Sized),
+        p: &[T],
+    ) -> Result<()> {
         if p.len() > self.width {
             self.grow(kernel, p.len())?;
         }
@@ -154,7 +158,11 @@ impl<T: Scalar> HistorySum<T> {
 
     /// The displacements at cells 0..=imax of the next target step (step `len()`, 0-based)
     /// due to every step pushed.
-    pub(crate) fn at(&mut self, kernel: &mut impl KernelRows<T>, imax: usize) -> Result<Vec<T>> {
+    pub(crate) fn at(
+        &mut self,
+        kernel: &mut (impl KernelRows<T> + ?Sized),
+        imax: usize,
+    ) -> Result<Vec<T>> {
         if imax + 1 > self.width {
             self.grow(kernel, imax + 1)?;
         }
@@ -176,7 +184,7 @@ impl<T: Scalar> HistorySum<T> {
 
     /// Widens the space dimension to at least `cells` and rebuilds the pending targets'
     /// accumulators from the squares that reach them (one per level).
-    fn grow(&mut self, kernel: &mut impl KernelRows<T>, cells: usize) -> Result<()> {
+    fn grow(&mut self, kernel: &mut (impl KernelRows<T> + ?Sized), cells: usize) -> Result<()> {
         let mut w = self.width;
         while w < cells {
             w *= 2;
@@ -199,7 +207,12 @@ impl<T: Scalar> HistorySum<T> {
 
     /// Adds the square completed by the c-th step, sources [c - L, c) and targets [c, c + L),
     /// L = 2^(trailing zeros of c), into the accumulators of the targets >= `from`.
-    fn square(&mut self, kernel: &mut impl KernelRows<T>, c: usize, from: usize) -> Result<()> {
+    fn square(
+        &mut self,
+        kernel: &mut (impl KernelRows<T> + ?Sized),
+        c: usize,
+        from: usize,
+    ) -> Result<()> {
         let len = 1usize << c.trailing_zeros();
         let t_end = match self.horizon {
             Some(h) => (c + len).min(h),
@@ -221,7 +234,14 @@ impl<T: Scalar> HistorySum<T> {
     }
 
     /// The square summed directly (Toeplitz plus mirror rows).
-    fn direct(&mut self, kernel: &impl KernelRows<T>, c: usize, len: usize, t0: usize, t1: usize) {
+    fn direct(
+        &mut self,
+        kernel: &(impl KernelRows<T> + ?Sized),
+        c: usize,
+        len: usize,
+        t0: usize,
+        t1: usize,
+    ) {
         let w = self.width;
         let scale = self.scale;
         for t in t0..t1 {
@@ -286,7 +306,7 @@ impl<T: Scalar> HistorySum<T> {
     /// = scale a(|k|, lag) for lags 1 ..= lag_max (< 2 len) and k in (-W, 2W).
     fn kernel_spectrum(
         &mut self,
-        kernel: &impl KernelRows<T>,
+        kernel: &(impl KernelRows<T> + ?Sized),
         len: usize,
         lag_max: usize,
     ) -> Vec<Complex<f64>> {
@@ -310,7 +330,7 @@ impl<T: Scalar> HistorySum<T> {
     /// The square by a 2-D FFT of size 2L x 4W.
     fn by_fft(
         &mut self,
-        kernel: &impl KernelRows<T>,
+        kernel: &(impl KernelRows<T> + ?Sized),
         c: usize,
         len: usize,
         t0: usize,

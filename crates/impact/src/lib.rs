@@ -14,7 +14,7 @@
 pub mod case;
 pub mod edge_fit;
 pub mod error;
-pub(crate) mod history;
+pub mod history;
 pub(crate) mod linalg;
 pub mod march;
 pub mod profile;

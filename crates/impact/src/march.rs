@@ -6,21 +6,23 @@
 //!
 //! Units inside: c1 = 1, mu = 1, lengths in R (so rho = 1/m^2, m = c2/c1).
 
+use complexfn::quadrature::CachedRules;
+
 use crate::error::{ImpactError, Result};
-use crate::history::HistorySum;
+use crate::history::{HistorySum, KernelRows};
 use crate::linalg::Factor;
 use crate::profile::Profile;
-use crate::striker::Compliance;
+use crate::scalar::Scalar;
 use crate::tables::{ShapeRules, Tables};
 
 /// How the penetration evolves.
 #[derive(Clone, Debug)]
 pub enum Motion {
-    /// A free rigid striker: mass per unit length m0 (units rho R^2 = R^2/m^2 here) and
-    /// initial speed v0 (units c1).
+    /// A free rigid striker: mass per unit length m0 and initial speed v0 (units c1).
     Free {
-        /// m0 in units mu R^2/c1^2.
-        mass: f64,
+        /// m0/(rho R^2); the march takes m0 = mass_ratio/m^2 in its units mu R^2/c1^2 at its
+        /// own precision.
+        mass_ratio: f64,
         /// Initial speed over c1.
         v0: f64,
     },
@@ -31,14 +33,17 @@ pub enum Motion {
 }
 
 impl Motion {
-    fn driven_h(&self, t: f64) -> Option<f64> {
+    /// The prescribed penetration at time t, at the precision of t (`None` for a free
+    /// striker).
+    fn driven_h<T: Scalar>(&self, t: T) -> Option<T> {
         match self {
             Motion::Free { .. } => None,
-            Motion::DrivenSpeed(v) => Some(v * t),
+            Motion::DrivenSpeed(v) => Some(t * T::input(*v)),
             Motion::DrivenTable(tab) => {
-                let i = tab.partition_point(|p| p.0 <= t).clamp(1, tab.len() - 1);
+                let i = tab.partition_point(|p| t >= p.0).clamp(1, tab.len() - 1);
                 let (a, b) = (tab[i - 1], tab[i]);
-                Some(a.1 + (b.1 - a.1) * (t - a.0) / (b.0 - a.0))
+                let (ax, ay, bx, by) = (T::input(a.0), T::input(a.1), T::input(b.0), T::input(b.1));
+                Some((t - ax) * (by - ay) / (bx - ax) + ay)
             }
         }
     }
@@ -47,15 +52,15 @@ impl Motion {
 /// The edge law (labelled in every output); shared with the edge analysis of `lamb::edge`.
 pub use lamb::edge::EdgeLaw;
 
-/// One time step's solution.
+/// One time step's solution, at the march's precision T.
 #[derive(Clone, Debug)]
-pub struct StepState {
+pub struct StepState<T = f64> {
     /// Time t_n (units R/c1).
-    pub t: f64,
+    pub t: T,
     /// Penetration h(t_n) (units R).
-    pub h: f64,
+    pub h: T,
     /// dh/dt (units c1).
-    pub v: f64,
+    pub v: T,
     /// Number of contact cells on one side minus one: cells 0..=k carry pressure (none when
     /// `pressure` is empty).
     pub k: usize,
@@ -63,52 +68,53 @@ pub struct StepState {
     /// and a supersonic edge; for the Signorini law the free edge of the step's pressures
     /// (the local model's edge, or the zero of a square-root fit through the last two cell
     /// pressures where the edge is captured cell by cell).
-    pub b: f64,
+    pub b: T,
     /// The time b stands for: t_n for a geometric edge, t_n - dt/2 for an edge the step's
     /// pressures set (they stand for the middle of the step, `docs/impact.md`, section 3).
     /// [`crate::case::Run::edge_at`] interpolates the edge to t_n.
-    pub edge_time: f64,
+    pub edge_time: T,
     /// Force per unit length R(t) (units mu R).
-    pub force: f64,
+    pub force: T,
     /// Cell pressures p_0..p_k (units mu), constant over the step.
-    pub pressure: Vec<f64>,
+    pub pressure: Vec<T>,
     /// The half-plane's mean normal surface displacement over the cells at x_0, x_1, ... at
     /// t_n (units R), at least over the contact and one cell beyond.
-    pub w: Vec<f64>,
+    pub w: Vec<T>,
     /// The striker's mean surface displacement towards its interior over the same cells
     /// (empty for a rigid striker).
-    pub ws: Vec<f64>,
+    pub ws: Vec<T>,
     /// Work done on the half-plane up to t_n, through the kernels (units mu R^2).
-    pub work: f64,
+    pub work: T,
     /// Work done on the striker's deformation up to t_n (its strain and vibration energy).
-    pub striker_work: f64,
+    pub striker_work: T,
 }
 
-/// The marching state on one grid.
-pub struct March<'a> {
-    tables: &'a mut Tables,
-    striker: Option<&'a mut Compliance>,
+/// The marching state on one grid, at the precision T (`crate::scalar`).
+pub struct March<'a, T: Scalar + CachedRules = f64> {
+    tables: &'a mut Tables<T>,
+    /// The striker's compliance rows (none for a rigid striker).
+    striker: Option<&'a mut dyn KernelRows<T>>,
     profile: &'a Profile,
     motion: &'a Motion,
     law: EdgeLaw,
-    dx: f64,
-    dt: f64,
+    dx: T,
+    dt: T,
     /// Largest admissible contact index (the profile's extent).
     kcap: usize,
     /// The steps so far.
-    pub steps: Vec<StepState>,
+    pub steps: Vec<StepState<T>>,
     /// Time of separation (free striker), if it happened.
-    pub separation: Option<f64>,
+    pub separation: Option<T>,
     /// The factor of the edge model's gap coefficient for the pair of bodies (1 for a
     /// rigid striker); `None` when the local model does not apply (a striker of other wave
     /// speeds or a shell): the edge is then captured cell by cell.
-    edge_gap_scale: Option<f64>,
+    edge_gap_scale: Option<T>,
     /// The history sums of the half-plane's and the striker's displacements.
-    history: HistorySum,
-    striker_history: Option<HistorySum>,
+    history: HistorySum<T>,
+    striker_history: Option<HistorySum<T>>,
     /// The factorised systems by number of contact cells (and the coupling they were built
     /// with).
-    systems: std::cell::RefCell<(f64, Vec<Option<std::rc::Rc<CellSystem>>>)>,
+    systems: std::cell::RefCell<SystemCache<T>>,
 }
 
 /// Source cells at least this many cells from the receiving cell enter the shape defect by
@@ -132,12 +138,12 @@ const SYSTEMS_KEPT: usize = 4;
 /// M^-1 u for the column u of cell c and M^-1 e_{c-k} for the corrected cells behind it, kept
 /// for the whole march.
 #[derive(Debug)]
-struct CellSystem {
-    factor: Factor,
-    z: Vec<f64>,
+struct CellSystem<T> {
+    factor: Factor<T>,
+    z: Vec<T>,
     /// M^-1 e_{c-k}, k = 1 ..= `ROWS_CORRECTED`: the columns of the shape corrections of the
     /// cells behind the edge cell.
-    behind: Vec<Vec<f64>>,
+    behind: Vec<Vec<T>>,
 }
 
 /// The two solutions behind every tied solve of one step and edge cell c: y = M^-1 r and
@@ -147,20 +153,23 @@ struct CellSystem {
 /// iterations on the edge's position cost O(c) each instead of a factorisation; M's
 /// factorisation and z are the same at every step ([`CellSystem`]), so a step costs O(c^2)
 /// when M is dense and O(c) when it is banded (`crate::linalg`).
-struct TiedBasis {
-    y: Vec<f64>,
-    system: std::rc::Rc<CellSystem>,
+struct TiedBasis<T> {
+    y: Vec<T>,
+    system: std::rc::Rc<CellSystem<T>>,
 }
+
+/// The factorised systems by number of contact cells and the coupling they were built with.
+type SystemCache<T> = (T, Vec<Option<std::rc::Rc<CellSystem<T>>>>);
 
 /// The local model of the edge cell (`docs/impact.md`, section 4): inside the contact the
 /// pressure is A d^lambda (d the distance from the edge b), outside the gap is A G s^(lambda + 1)
 /// (s the distance beyond b), the local solution of `lamb::edge` for the edge's current speed.
 #[derive(Clone, Copy, Debug)]
-struct EdgeModel {
+struct EdgeModel<T> {
     /// The exponent lambda the edge law selects.
-    lambda: f64,
+    lambda: T,
     /// The gap coefficient G (units 1/mu); unused by the kinematic law.
-    gap: f64,
+    gap: T,
     /// Supersonic edge: the two laws coincide, the edge is the geometric one.
     geometric: bool,
     /// Whether the free edge is placed inside its cell by the model: below
@@ -170,86 +179,97 @@ struct EdgeModel {
     /// (1 - nu)/pi: the static kernel's factor, w = -(1 - nu)/(pi mu) Int p(xi) ln|x - xi| dxi
     /// (units mu = 1), for the shape correction of the free edge's condition; scaled like the
     /// gap for a striker of the half-plane's own wave speeds (the two bodies' compliances add).
-    static_factor: f64,
+    static_factor: T,
     /// beta dx, beta the second term of the local expansion p = A d^lambda (1 + beta d):
     /// the factor of the other edge of a symmetric contact, (1 - d/(2b))^lambda, gives
     /// beta = -lambda/(2b) (`docs/impact.md`, section 4).
-    curvature: f64,
+    curvature: T,
 }
 
 /// The error of a step whose contact system is singular (or gives a non-finite solution).
-fn singular_system(t: f64) -> ImpactError {
+fn singular_system<T: Scalar>(t: T) -> ImpactError {
     ImpactError::Step {
-        time: format!("{t:.6}"),
+        time: format!("{:.6}", t.to_f64()),
         reason: "singular contact system".into(),
     }
 }
 
 /// A step's contact: (last contact cell, edge, cell pressures, force).
-type StepSet = (usize, f64, Vec<f64>, f64);
+type StepSet<T> = (usize, T, Vec<T>, T);
 
 /// Whether an edge is that of the step's middle (set by the step's pressures) rather than
 /// of its end (geometric).
 type MidStep = bool;
 
 /// What every trial solve of one step shares.
-struct StepData {
+struct StepData<T> {
     /// The half-plane's and the striker's displacements at the cells due to the past steps
     /// (the striker's empty when rigid).
-    hist: (Vec<f64>, Vec<f64>),
+    hist: (Vec<T>, Vec<T>),
     /// The profile's mean over the cells 0..=imax (`None` beyond its extent).
-    fbar: Vec<Option<f64>>,
+    fbar: Vec<Option<T>>,
     /// The penetration at the step's end before the step's own force.
-    h_pred: f64,
+    h_pred: T,
     /// The step's change of penetration per unit force (free striker; 0 when driven).
-    coupling: f64,
+    coupling: T,
     /// The step's time.
-    t: f64,
+    t: T,
 }
 
-impl StepData {
+impl<T: Scalar> StepData<T> {
     /// The profile's mean over cell i.
-    fn fbar(&self, i: usize) -> Result<f64> {
+    fn fbar(&self, i: usize) -> Result<T> {
         self.fbar
             .get(i)
             .copied()
             .flatten()
             .ok_or_else(|| ImpactError::Step {
-                time: format!("{:.6}", self.t),
+                time: format!("{:.6}", self.t.to_f64()),
                 reason: "the contact reaches the end of the profile".into(),
             })
     }
 
     /// The approach the contact condition asks of cell i, h - mean f_i, less the past
     /// steps' displacements, for a step force `force`.
-    fn target(&self, i: usize, force: f64) -> Result<f64> {
+    fn target(&self, i: usize, force: T) -> Result<T> {
         Ok(self.h_pred - self.coupling * force - self.fbar(i)?)
     }
 }
 
 /// d^e for d >= 0: through the square root and integer powers when 2e is a small integer (the
 /// exponents +-1/2 of the edge laws below c2 and their primitives), `powf` otherwise.
-fn pow(d: f64, e: f64) -> f64 {
-    let twice = 2.0 * e;
-    if twice == twice.round() && twice.abs() <= 16.0 {
-        let n = twice as i32;
+fn pow<T: Scalar>(d: T, e: T) -> T {
+    let twice = e * 2.0;
+    let n = twice.to_f64().round();
+    if twice == n && n.abs() <= 16.0 {
+        let n = n as i32;
         if n % 2 == 0 {
             d.powi(n / 2)
         } else {
             d.sqrt() * d.powi((n - 1) / 2)
         }
     } else {
-        d.powf(e)
+        d.powf(&e)
     }
+}
+
+/// The most fixed-point iterations of one step on the force (kinematic law), in f64; in
+/// proportion to the significand's bits at other precisions.
+const ITERATIONS: usize = 50;
+
+/// A relative tolerance stated for f64, scaled to the precision T (the same multiple of its
+/// rounding unit).
+fn tolerance<T: Scalar>(in_f64: f64) -> f64 {
+    in_f64 * (T::of(1.0).epsilon().to_f64() / f64::EPSILON)
 }
 
 /// Fraction of the Rayleigh speed below which a free (Signorini) edge is placed inside its
 /// cell by the local model; faster free edges are captured cell by cell.
 const FREE_EDGE_SPEED: f64 = 0.8;
 
-impl EdgeModel {
+impl<T: Scalar> EdgeModel<T> {
     /// (1/dx) Int_lo^hi d^lambda dd (0 <= lo <= hi).
-    fn mean_power(&self, lo: f64, hi: f64, dx: f64) -> f64 {
+    fn mean_power(&self, lo: T, hi: T, dx: T) -> T {
         let e = self.lambda + 1.0;
         let beta = self.curvature / dx;
         (pow(hi, e) - pow(lo, e)) / (e * dx)
@@ -261,10 +281,10 @@ impl EdgeModel {
     /// edge cell per unit mean pressure of cell c - 1 that the cells' constant pressures must
     /// leave there: the model's gap less the shape correction of the c + 1 cells 0..=c
     /// (`docs/impact.md`, section 4; the correction only for a free edge, given its rules).
-    fn tie(&self, theta: f64, dx: f64, c: usize, shape: Option<ShapeRules>) -> (f64, f64) {
-        let outside = (1.0 - theta) * dx;
+    fn tie(&self, theta: T, dx: T, c: usize, shape: Option<ShapeRules<T>>) -> (T, T) {
+        let outside = (T::of(1.0) - theta) * dx;
         let neighbour = self.neighbour_mean(theta, dx);
-        let load = self.mean_power(0.0, theta * dx, dx);
+        let load = self.mean_power(T::of(0.0), theta * dx, dx);
         let e = self.lambda + 2.0;
         // the gap of A d^lambda (1 + beta d): A G s^(lambda + 1) (1 + beta_g s) with
         // beta_g = -beta (lambda + 1)/(lambda + 2) (the kernel of a steadily moving edge is
@@ -280,13 +300,13 @@ impl EdgeModel {
     }
 
     /// The mean of d^lambda over cell c - 1 (the amplitude's reference), edge at theta.
-    fn neighbour_mean(&self, theta: f64, dx: f64) -> f64 {
+    fn neighbour_mean(&self, theta: T, dx: T) -> T {
         self.mean_power(theta * dx, theta * dx + dx, dx)
     }
 
     /// The displacement the cells' constant pressures miss over the cell `k` behind the edge
     /// cell, per unit amplitude A: (1 - nu)/pi dx^(lambda + 1) times the shape defect.
-    fn shape_term(&self, theta: f64, dx: f64, c: usize, k: usize, rules: ShapeRules) -> f64 {
+    fn shape_term(&self, theta: T, dx: T, c: usize, k: usize, rules: ShapeRules<T>) -> T {
         self.static_factor * pow(dx, self.lambda + 1.0) * self.shape_defect_at(theta, c, k, rules)
     }
 
@@ -296,7 +316,7 @@ impl EdgeModel {
     /// cell (0: the edge cell), of -Int (p - pbar) ln|d - xi| dxi for p = d^lambda (d > 0) and
     /// pbar its mean on each cell: the part of the local solution's displacement there that
     /// the cells' constant pressures miss (the static kernel without its factor).
-    fn shape_defect_at(&self, theta: f64, cells: usize, k: usize, rules: ShapeRules) -> f64 {
+    fn shape_defect_at(&self, theta: T, cells: usize, k: usize, rules: ShapeRules<T>) -> T {
         self.shape_defect_with(theta, cells, k, rules, FAR_CELLS)
     }
 
@@ -308,58 +328,56 @@ impl EdgeModel {
     /// of fourteen (`far_cells_by_moments_agree_with_the_quadrature`).
     fn shape_defect_with(
         &self,
-        theta: f64,
+        theta: T,
         cells: usize,
         k: usize,
-        rules: ShapeRules,
+        rules: ShapeRules<T>,
         far: usize,
-    ) -> f64 {
+    ) -> T {
         let lam = self.lambda;
         let kf = k as f64;
+        let zero = T::of(0.0);
         // primitive of ln|u|
-        let f = |u: f64| if u == 0.0 { 0.0 } else { u * u.abs().ln() - u };
+        let f = |u: T| if u == 0.0 { zero } else { u * u.abs().ln() - u };
         // minus the mean over the receiving cell of ln|d - xi|
-        let kbar = |xi: f64| f(theta + kf - 1.0 - xi) - f(theta + kf - xi);
-        let power = |d: f64| if d > 0.0 { pow(d, lam) } else { 0.0 };
-        let prim = |d: f64| {
+        let kbar = |xi: T| f(theta + (kf - 1.0) - xi) - f(theta + kf - xi);
+        let power = |d: T| if d > 0.0 { pow(d, lam) } else { zero };
+        let prim = |d: T| {
             if d > 0.0 {
                 pow(d, lam + 1.0) / (lam + 1.0)
             } else {
-                0.0
+                zero
             }
         };
         let (clustered_rule, smooth_rule) = rules;
         // Int_a^b (p - pbar) kbar, clustered at both ends (x = end + (mid - end) u^2): the
         // pieces touching the edge cell's ends (kinks of kbar) or the edge (d^lambda)
-        let clustered = |a: f64, b: f64, pbar: f64| -> f64 {
-            let mid = 0.5 * (a + b);
-            let mut s = 0.0;
+        let clustered = |a: T, b: T, pbar: T| -> T {
+            let mid = (a + b) * 0.5;
+            let mut s = zero;
             for (end, dir) in [(a, mid - a), (b, mid - b)] {
                 for &(u, w) in clustered_rule {
                     // u on [0, 1], weight w/2
-                    let u = 0.5 * (u + 1.0);
+                    let u = (u + 1.0) * 0.5;
                     let x = end + dir * u * u;
                     s += (power(x) - pbar) * kbar(x) * w * dir.abs() * u;
                 }
             }
             s
         };
-        let smooth = |a: f64, b: f64, pbar: f64| -> f64 {
-            smooth_rule
-                .iter()
-                .map(|&(u, w)| {
-                    let x = a + 0.5 * (b - a) * (u + 1.0);
-                    (power(x) - pbar) * kbar(x) * 0.5 * w * (b - a)
-                })
-                .sum()
+        let smooth = |a: T, b: T, pbar: T| -> T {
+            smooth_rule.iter().fold(zero, |s, &(u, w)| {
+                let x = a + (b - a) * (u + 1.0) * 0.5;
+                s + (power(x) - pbar) * kbar(x) * w * (b - a) * 0.5
+            })
         };
         // the receiving cell's ends, where kbar's derivatives are singular
-        let (r0, r1) = (theta + kf - 1.0, theta + kf);
-        let moments = |a: f64, b: f64, pbar: f64| -> f64 {
-            let m = 0.5 * (a + b);
-            let h = 0.5 * (b - a);
+        let (r0, r1) = (theta + (kf - 1.0), theta + kf);
+        let moments = |a: T, b: T, pbar: T| -> T {
+            let m = (a + b) * 0.5;
+            let h = (b - a) * 0.5;
             // D_1 .. D_MOMENTS on the smooth rule's nodes (p is smooth away from the edge)
-            let mut dn = [0.0; MOMENTS];
+            let mut dn = [zero; MOMENTS];
             for &(u, w) in smooth_rule {
                 let e = h * u;
                 let mut q = (power(m + e) - pbar) * w * h;
@@ -372,21 +390,21 @@ impl EdgeModel {
             // kbar = f(r0 - x) - f(r1 - x): kbar' = ln|r1 - x| - ln|r0 - x| and, for n >= 2,
             // kbar^(n)(m)/n! = (u0^(1-n) - u1^(1-n))/(n (n - 1)), u = r - m
             let mut sum = (u1.abs().ln() - u0.abs().ln()) * dn[0];
-            let (mut p0, mut p1) = (1.0 / u0, 1.0 / u1);
+            let (mut p0, mut p1) = (u0.recip(), u1.recip());
             for (i, d) in dn.iter().enumerate().skip(1) {
                 let n = (i + 1) as f64;
-                sum += (p0 - p1) * d / (n * (n - 1.0));
+                sum += (p0 - p1) * *d / (n * (n - 1.0));
                 p0 /= u0;
                 p1 /= u1;
             }
             sum
         };
-        let mut total = 0.0;
+        let mut total = zero;
         for j in 0..=cells {
-            let (a, b) = (theta + j as f64 - 1.0, theta + j as f64);
+            let (a, b) = (theta + (j as f64 - 1.0), theta + j as f64);
             let pbar = prim(b) - prim(a);
             total += match j {
-                0 if theta > 0.0 => clustered(a, 0.0, pbar) + clustered(0.0, b, pbar),
+                0 if theta > 0.0 => clustered(a, zero, pbar) + clustered(zero, b, pbar),
                 0 => clustered(a, b, pbar),
                 // the cells touching the edge cell or the receiving cell (kinks of kbar)
                 _ if j <= 1 || j + 1 >= k && j <= k + 1 => clustered(a, b, pbar),
@@ -398,21 +416,21 @@ impl EdgeModel {
     }
 }
 
-impl<'a> March<'a> {
+impl<'a, T: Scalar + CachedRules> March<'a, T> {
     /// A march with cell width dx and time step kappa dx (kappa from the tables), with the
     /// striker's compliance (none for a rigid striker).
     pub(crate) fn new(
-        tables: &'a mut Tables,
-        striker: Option<&'a mut Compliance>,
+        tables: &'a mut Tables<T>,
+        striker: Option<&'a mut dyn KernelRows<T>>,
         profile: &'a Profile,
         motion: &'a Motion,
         law: EdgeLaw,
-        dx: f64,
-        kappa: f64,
+        dx: T,
+        kappa: T,
     ) -> Self {
         let ext = profile.extent();
         let kcap = if ext.is_finite() {
-            ((ext / dx - 0.5).floor().max(0.0)) as usize
+            ((ext / dx.to_f64() - 0.5).floor().max(0.0)) as usize
         } else {
             usize::MAX / 4
         };
@@ -424,10 +442,10 @@ impl<'a> March<'a> {
             dx,
             dt: kappa * dx,
             kcap,
-            edge_gap_scale: striker.is_none().then_some(1.0),
+            edge_gap_scale: striker.is_none().then(|| T::of(1.0)),
             history: HistorySum::new(dx, None),
             striker_history: striker.is_some().then(|| HistorySum::new(dx, None)),
-            systems: std::cell::RefCell::new((f64::NAN, Vec::new())),
+            systems: std::cell::RefCell::new((T::of(f64::NAN), Vec::new())),
             striker,
             steps: Vec::new(),
             separation: None,
@@ -445,13 +463,13 @@ impl<'a> March<'a> {
     }
 
     /// Sets the factor of the edge model's gap coefficient (`None`: no edge model).
-    pub(crate) fn with_edge_gap_scale(mut self, scale: Option<f64>) -> Self {
+    pub(crate) fn with_edge_gap_scale(mut self, scale: Option<T>) -> Self {
         self.edge_gap_scale = scale;
         self
     }
 
     /// Time step.
-    pub fn dt(&self) -> f64 {
+    pub fn dt(&self) -> T {
         self.dt
     }
 
@@ -461,29 +479,29 @@ impl<'a> March<'a> {
     fn reach(&self) -> Option<usize> {
         let hp = self.tables.reach_at(0);
         match self.striker.as_deref() {
-            Some(s) => s.reach_at(0).map(|r| r.max(hp)),
+            Some(s) => s.reach(0).map(|r| r.max(hp)),
             None => Some(hp),
         }
     }
 
-    fn weight(&self, j: usize) -> f64 {
+    fn weight(&self, j: usize) -> T {
         if j == 0 {
             self.dx
         } else {
-            2.0 * self.dx
+            self.dx * 2.0
         }
     }
 
     /// Displacements at t_n (n = steps.len() + 1) at x_0..x_imax due to all past steps: the
     /// half-plane's and the striker's (empty for a rigid striker), from the fast history sums
     /// (`crate::history`).
-    fn history(&mut self, n: usize, imax: usize) -> Result<(Vec<f64>, Vec<f64>)> {
+    fn history(&mut self, n: usize, imax: usize) -> Result<(Vec<T>, Vec<T>)> {
         debug_assert_eq!(self.history.len() + 1, n);
         let kmax = self.steps.iter().map(|s| s.k).max().unwrap_or(0).max(imax);
         // the current step's coefficients (lag 0)
         self.tables.ensure(2 * kmax + 2, 0)?;
         if let Some(s) = self.striker.as_deref_mut() {
-            s.ensure(2 * kmax + 2, 0)?;
+            s.ensure_rows(2 * kmax + 2, 0)?;
         }
         let hist = self.history.at(&mut *self.tables, imax)?;
         let hist_s = match (self.striker.as_deref_mut(), self.striker_history.as_mut()) {
@@ -494,36 +512,42 @@ impl<'a> March<'a> {
     }
 
     /// The current step's coefficient of the half-plane and of the striker.
-    fn current_parts(&self, i: usize, j: usize) -> (f64, f64) {
-        let pair = |row: &[f64]| row[i.abs_diff(j)] + if j > 0 { row[i + j] } else { 0.0 };
+    fn current_parts(&self, i: usize, j: usize) -> (T, T) {
+        let pair = |row: &[T]| {
+            if j > 0 {
+                row[i.abs_diff(j)] + row[i + j]
+            } else {
+                row[i]
+            }
+        };
         let hp = pair(self.tables.row(0)) * self.dx;
         let st = match self.striker.as_deref() {
             Some(s) => {
-                let (row, scale) = s.row(0);
+                let (row, scale) = s.scaled_row(0);
                 pair(row) * scale * self.dx
             }
-            None => 0.0,
+            None => T::of(0.0),
         };
         (hp, st)
     }
 
-    fn current(&self, i: usize, j: usize) -> f64 {
+    fn current(&self, i: usize, j: usize) -> T {
         let (a, b) = self.current_parts(i, j);
         a + b
     }
 
     /// Solves the step with contact cells 0..=k: returns (pressures, force).
-    fn solve_set(&self, d: &StepData, k: usize) -> Result<(Vec<f64>, f64)> {
+    fn solve_set(&self, d: &StepData<T>, k: usize) -> Result<(Vec<T>, T)> {
         // cell k + 1 tied with a zero ratio carries nothing
-        let (mut p, f) = self.solve_tied(d, k + 1, 0.0)?;
+        let (mut p, f) = self.solve_tied(d, k + 1, T::of(0.0))?;
         p.pop();
         Ok((p, f))
     }
 
     /// The half-plane's and the striker's displacement at x_i at t_n from the histories and
     /// the current pressures (the striker's 0 when rigid).
-    fn displacements(&self, i: usize, hist: &(Vec<f64>, Vec<f64>), p: &[f64]) -> (f64, f64) {
-        let (mut a, mut b) = (hist.0[i], hist.1.get(i).copied().unwrap_or(0.0));
+    fn displacements(&self, i: usize, hist: &(Vec<T>, Vec<T>), p: &[T]) -> (T, T) {
+        let (mut a, mut b) = (hist.0[i], hist.1.get(i).copied().unwrap_or(T::of(0.0)));
         // the current step's cells reach |i - j| <= reach (the mirror terms i + j <= reach
         // lie inside that range)
         let near = match self.reach() {
@@ -532,14 +556,14 @@ impl<'a> March<'a> {
         };
         for (j, v) in p.iter().enumerate().take(near.end).skip(near.start) {
             let (ca, cb) = self.current_parts(i, j);
-            a += ca * v;
-            b += cb * v;
+            a += ca * *v;
+            b += cb * *v;
         }
         (a, b)
     }
 
     /// The total approach w + w_s at x_i at t_n.
-    fn displacement(&self, i: usize, hist: &(Vec<f64>, Vec<f64>), p: &[f64]) -> f64 {
+    fn displacement(&self, i: usize, hist: &(Vec<T>, Vec<T>), p: &[T]) -> T {
         let (a, b) = self.displacements(i, hist, p);
         a + b
     }
@@ -548,31 +572,36 @@ impl<'a> March<'a> {
     /// the march is over.
     pub fn step(&mut self) -> Result<bool> {
         let n = self.steps.len() + 1;
-        let t = n as f64 * self.dt;
+        let t = self.dt * n as f64;
         let dt = self.dt;
+        let zero = T::of(0.0);
         let (h0, v0, k0) = match self.steps.last() {
             Some(s) => (s.h, s.v, s.k),
             None => match self.motion {
-                Motion::Free { v0, .. } => (0.0, *v0, 0),
-                _ => (0.0, 0.0, 0),
+                Motion::Free { v0, .. } => (zero, T::input(*v0), 0),
+                _ => (zero, zero, 0),
             },
         };
         let (h_pred, coupling, mass) = match (self.motion.driven_h(t), self.motion) {
-            (Some(h), _) => (h, 0.0, f64::INFINITY),
-            (None, Motion::Free { mass, .. }) => (h0 + dt * v0, dt * dt / (2.0 * mass), *mass),
+            (Some(h), _) => (h, zero, T::of(f64::INFINITY)),
+            (None, Motion::Free { mass_ratio, .. }) => {
+                let m = *self.tables.half_plane().m();
+                let mass = T::input(*mass_ratio) / (m * m);
+                (h0 + dt * v0, dt * dt / (mass * 2.0), mass)
+            }
             _ => unreachable!("a driven motion always gives h"),
         };
         let profile = self.profile;
-        let kin = move |h: f64| profile.kinematic_edge(h);
+        let kin = move |h: T| profile.kinematic_edge(h);
         let kin_b = kin(h_pred).ok_or_else(|| ImpactError::Step {
-            time: format!("{t:.6}"),
+            time: format!("{:.6}", t.to_f64()),
             reason: "the penetration exceeds the profile's extent".into(),
         })?;
         let dxv = self.dx;
-        let kin_k = move |b: f64| -> usize { ((b / dxv).ceil() as usize).saturating_sub(1) };
+        let kin_k = move |b: T| -> usize { ((b / dxv).to_f64().ceil() as usize).saturating_sub(1) };
         // the cell containing an edge b: x_c - dx/2 <= b < x_c + dx/2
-        let edge_cell = move |b: f64| -> usize { (b / dxv + 0.5).floor().max(0.0) as usize };
-        let b_prev = self.steps.last().map(|s| s.b).unwrap_or(0.0);
+        let edge_cell = move |b: T| -> usize { (b / dxv + 0.5).to_f64().floor().max(0.0) as usize };
+        let b_prev = self.steps.last().map(|s| s.b).unwrap_or(zero);
         let imax = (k0 + 3)
             .max(kin_k(kin_b) + 3)
             .max(edge_cell(b_prev) + 3)
@@ -591,19 +620,19 @@ impl<'a> March<'a> {
             matches!(self.law, EdgeLaw::Kinematic) || matches!(model, Some(m) if m.geometric);
         match (geometric, model) {
             (true, _) => {
-                let mut f_est = 0.0;
+                let mut f_est = zero;
                 // the tied basis of the edge cell, the same while the edge stays in it
-                let mut kept: Option<(usize, TiedBasis)> = None;
-                for _ in 0..50 {
+                let mut kept: Option<(usize, TiedBasis<T>)> = None;
+                for _ in 0..ITERATIONS * T::BITS as usize / 53 {
                     let h = h_pred - coupling * f_est;
-                    let b = kin(h).unwrap_or(0.0);
+                    let b = kin(h).unwrap_or(zero);
                     if b <= 0.0 {
                         break;
                     }
                     let c = edge_cell(b).min(self.kcap);
                     let (k, p, f) = match model {
                         Some(m) if c >= 2 && c <= imax => {
-                            let theta = ((b / dxv + 0.5) - c as f64).clamp(0.0, 1.0);
+                            let theta = (b / dxv + (0.5 - c as f64)).max(zero).min(T::of(1.0));
                             let (ratio, _) = m.tie(theta, dxv, c, None);
                             // the cells behind the edge carry the shape correction of
                             // their conditions, as behind a free edge
@@ -625,7 +654,7 @@ impl<'a> March<'a> {
                             (k, p, f)
                         }
                     };
-                    let done = (f - f_est).abs() <= 1e-14 * f.abs();
+                    let done = (f - f_est).abs() <= f.abs() * tolerance::<T>(1e-14);
                     f_est = f;
                     set = Some(((k, b, p, f), false));
                     if done {
@@ -656,7 +685,7 @@ impl<'a> March<'a> {
                     if i <= imax.min(self.kcap) {
                         // beyond the profile's extent the gap is open
                         let gap = self.displacement(i, hist, &p)
-                            - data.target(i, f).unwrap_or(f64::NEG_INFINITY);
+                            - data.target(i, f).unwrap_or(T::of(f64::NEG_INFINITY));
                         if gap < 0.0 && !tried[i] {
                             k = i;
                             continue;
@@ -668,7 +697,7 @@ impl<'a> March<'a> {
                 }
             }
         }
-        let ((k, b, p, f), mid_step): (StepSet, MidStep) = match set {
+        let ((k, b, p, f), mid_step): (StepSet<T>, MidStep) = match set {
             Some(s) => s,
             None => {
                 // no contact: the striker has left the surface (or never touched it)
@@ -678,21 +707,20 @@ impl<'a> March<'a> {
                         return Ok(false);
                     }
                 }
-                ((0, 0.0, Vec::new(), 0.0), false)
+                ((0, zero, Vec::new(), zero), false)
             }
         };
         let (h, v) = match self.motion.driven_h(t) {
             Some(h) => {
-                let hp = self.motion.driven_h(t - dt).unwrap_or(0.0);
+                let hp = self.motion.driven_h(t - dt).unwrap_or(zero);
                 (h, (h - hp) / dt)
             }
             None => (
-                h0 + dt * v0 - dt * dt * f / (2.0 * mass),
+                h0 + dt * v0 - dt * dt * f / (mass * 2.0),
                 v0 - dt * f / mass,
             ),
         };
-        let (w, ws): (Vec<f64>, Vec<f64>) =
-            (0..=imax).map(|i| self.displacements(i, hist, &p)).unzip();
+        let (w, ws): (Vec<T>, Vec<T>) = (0..=imax).map(|i| self.displacements(i, hist, &p)).unzip();
         let ws = if self.striker.is_some() {
             ws
         } else {
@@ -701,20 +729,20 @@ impl<'a> March<'a> {
         let prev = self.steps.last();
         let prev_w = prev.map(|s| s.w.as_slice()).unwrap_or(&[]);
         let prev_ws = prev.map(|s| s.ws.as_slice()).unwrap_or(&[]);
-        let (mut dwork, mut dwork_s) = (0.0, 0.0);
-        for (j, pj) in p.iter().enumerate() {
-            let before = prev_w.get(j).copied().unwrap_or(0.0);
+        let (mut dwork, mut dwork_s) = (zero, zero);
+        for (j, &pj) in p.iter().enumerate() {
+            let before = prev_w.get(j).copied().unwrap_or(zero);
             dwork += self.weight(j) * pj * (w[j] - before);
-            if let Some(now) = ws.get(j) {
-                let before = prev_ws.get(j).copied().unwrap_or(0.0);
+            if let Some(&now) = ws.get(j) {
+                let before = prev_ws.get(j).copied().unwrap_or(zero);
                 dwork_s += self.weight(j) * pj * (now - before);
             }
         }
-        let work = prev.map(|s| s.work).unwrap_or(0.0) + dwork;
-        let striker_work = prev.map(|s| s.striker_work).unwrap_or(0.0) + dwork_s;
+        let work = prev.map(|s| s.work).unwrap_or(zero) + dwork;
+        let striker_work = prev.map(|s| s.striker_work).unwrap_or(zero) + dwork_s;
         if !(h.is_finite() && v.is_finite() && f.is_finite()) {
             return Err(ImpactError::Step {
-                time: format!("{t:.6}"),
+                time: format!("{:.6}", t.to_f64()),
                 reason: "a non-finite penetration or force".into(),
             });
         }
@@ -728,7 +756,7 @@ impl<'a> March<'a> {
             v,
             k,
             b,
-            edge_time: if mid_step { t - 0.5 * dt } else { t },
+            edge_time: if mid_step { t - dt * 0.5 } else { t },
             force: f,
             pressure: p,
             w,
@@ -741,38 +769,48 @@ impl<'a> March<'a> {
 
     /// The mean of the profile over cell i (3-point Gauss-Legendre; cell 0 through its
     /// right half, the profile being even); `None` beyond the profile's extent.
-    fn profile_mean(&self, i: usize) -> Option<f64> {
+    fn profile_mean(&self, i: usize) -> Option<T> {
+        let half_cell = self.dx * 0.5;
         let (lo, hi) = if i == 0 {
-            (0.0, 0.5 * self.dx)
+            (T::of(0.0), half_cell)
         } else {
-            let x = i as f64 * self.dx;
-            (x - 0.5 * self.dx, x + 0.5 * self.dx)
+            let x = self.dx * i as f64;
+            (x - half_cell, x + half_cell)
         };
-        let (mid, half) = (0.5 * (lo + hi), 0.5 * (hi - lo));
-        let u = (0.6f64).sqrt();
-        let mut s = 0.0;
-        for (node, w) in [(-u, 5.0 / 9.0), (0.0, 8.0 / 9.0), (u, 5.0 / 9.0)] {
+        let (mid, half) = ((lo + hi) * 0.5, (hi - lo) * 0.5);
+        let u = (T::of(3.0) / 5.0).sqrt();
+        let ninth = T::of(1.0) / 9.0;
+        let mut s = T::of(0.0);
+        for (node, w) in [
+            (-u, ninth * 5.0),
+            (T::of(0.0), ninth * 8.0),
+            (u, ninth * 5.0),
+        ] {
             s += w * self.profile.height(mid + half * node)?;
         }
-        Some(0.5 * s)
+        Some(s * 0.5)
     }
 
     /// The edge's speed (units c1) over the last steps (up to four), from the reported edges
     /// (the edge at t = 0 is 0); over the first step, from the geometric edge `kin_b` at its
     /// end.
-    fn edge_speed(&self, kin_b: f64) -> f64 {
+    fn edge_speed(&self, kin_b: T) -> T {
         let n = self.steps.len();
         if n == 0 {
             return kin_b / self.dt;
         }
         let q = n.min(4);
-        let before = if n > q { self.steps[n - 1 - q].b } else { 0.0 };
-        (self.steps[n - 1].b - before) / (q as f64 * self.dt)
+        let before = if n > q {
+            self.steps[n - 1 - q].b
+        } else {
+            T::of(0.0)
+        };
+        (self.steps[n - 1].b - before) / (self.dt * q as f64)
     }
 
     /// The local model of the edge cell for the current edge speed and law (`lamb::edge`);
     /// `None` for the flat punch (its edges sit on cell boundaries).
-    fn edge_model(&self, kin_b: f64) -> Result<Option<EdgeModel>> {
+    fn edge_model(&self, kin_b: T) -> Result<Option<EdgeModel<T>>> {
         let Some(scale) = self.edge_gap_scale else {
             return Ok(None);
         };
@@ -784,12 +822,12 @@ impl<'a> March<'a> {
         let d = self.edge_speed(kin_b);
         // a receding or resting edge takes the model of a slowly advancing one (the
         // static limit), below the Rayleigh speed
-        let mut speed = if d > 0.0 { d } else { d.abs().min(0.5 * sr) };
-        speed = speed.max(1e-6);
+        let mut speed = if d > 0.0 { d } else { d.abs().min(sr * 0.5) };
+        speed = speed.max(T::of(1e-6));
         // off the speeds where the local solutions jump (refused by `lamb::edge`)
         let guard = 10.0 * lamb::edge::SPEED_GUARD;
-        for c in [sr, m, 1.0] {
-            if (speed - c).abs() <= guard * c {
+        for c in [sr, m, T::of(1.0)] {
+            if (speed - c).abs() <= c * guard {
                 speed = c * (1.0 - guard);
             }
         }
@@ -798,30 +836,31 @@ impl<'a> March<'a> {
             .solutions
             .iter()
             .find(|s| s.lambda == eb.selected)
-            .map_or(0.0, |s| s.gap_coefficient);
+            .map_or(T::of(0.0), |s| s.gap_coefficient);
+        let pi = speed.pi();
         Ok(Some(EdgeModel {
             lambda: eb.selected,
             gap: gap * scale,
             geometric: eb.range == lamb::edge::SpeedRange::Supersonic,
-            sub_cell: speed < FREE_EDGE_SPEED * sr,
-            static_factor: scale * (1.0 - hp.poisson()) / std::f64::consts::PI,
+            sub_cell: speed < sr * FREE_EDGE_SPEED,
+            static_factor: scale * (T::of(1.0) - hp.poisson()) / pi,
             curvature: match self.steps.last() {
-                Some(s) if s.b > 0.0 => -eb.selected * self.dx / (2.0 * s.b),
-                _ => 0.0,
+                Some(s) if s.b > 0.0 => -eb.selected * self.dx / (s.b * 2.0),
+                _ => T::of(0.0),
             },
         }))
     }
 
     /// Solves the step with full contact cells 0..c-1 and the edge cell c, whose mean
     /// pressure is `ratio` times that of cell c - 1: returns (pressures 0..=c, force).
-    fn solve_tied(&self, d: &StepData, c: usize, ratio: f64) -> Result<(Vec<f64>, f64)> {
+    fn solve_tied(&self, d: &StepData<T>, c: usize, ratio: T) -> Result<(Vec<T>, T)> {
         let basis = self.tied_basis(d, c)?;
         self.tied_solution(d, &basis, c, ratio)
     }
 
     /// The factorised system of the cells 0..c - 1 and M^-1 u ([`CellSystem`]), built once
     /// per march.
-    fn cell_system(&self, d: &StepData, c: usize) -> Result<std::rc::Rc<CellSystem>> {
+    fn cell_system(&self, d: &StepData<T>, c: usize) -> Result<std::rc::Rc<CellSystem<T>>> {
         {
             let cache = self.systems.borrow();
             if cache.0 == d.coupling {
@@ -831,8 +870,8 @@ impl<'a> March<'a> {
             }
         }
         let n = c;
-        let w: Vec<f64> = (0..n).map(|j| self.weight(j)).collect();
-        let u: Vec<f64> = (0..n)
+        let w: Vec<T> = (0..n).map(|j| self.weight(j)).collect();
+        let u: Vec<T> = (0..n)
             .map(|i| self.current(i, c) + d.coupling * self.weight(c))
             .collect();
         let singular = || singular_system(d.t);
@@ -843,8 +882,8 @@ impl<'a> March<'a> {
         // correction (the same at every step, like z)
         let behind = (1..=ROWS_CORRECTED.min(n))
             .map(|k| {
-                let mut e = vec![0.0; n];
-                e[n - k] = 1.0;
+                let mut e = vec![T::of(0.0); n];
+                e[n - k] = T::of(1.0);
                 factor.solve(&e).ok_or_else(singular)
             })
             .collect::<Result<Vec<_>>>()?;
@@ -870,11 +909,12 @@ impl<'a> March<'a> {
     }
 
     /// The two solutions behind the tied solves of cell c at this step ([`TiedBasis`]).
-    fn tied_basis(&self, d: &StepData, c: usize) -> Result<TiedBasis> {
+    fn tied_basis(&self, d: &StepData<T>, c: usize) -> Result<TiedBasis<T>> {
         let sys = self.cell_system(d, c)?;
-        let mut r = vec![0.0; c];
+        let zero = T::of(0.0);
+        let mut r = vec![zero; c];
         for (i, ri) in r.iter_mut().enumerate() {
-            *ri = d.target(i, 0.0)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(0.0);
+            *ri = d.target(i, zero)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(zero);
         }
         let y = sys.factor.solve(&r).ok_or_else(|| singular_system(d.t))?;
         Ok(TiedBasis { y, system: sys })
@@ -884,11 +924,11 @@ impl<'a> March<'a> {
     /// pressure of cell c - 1, from the step's [`TiedBasis`] of cell c.
     fn tied_solution(
         &self,
-        d: &StepData,
-        basis: &TiedBasis,
+        d: &StepData<T>,
+        basis: &TiedBasis<T>,
         c: usize,
-        ratio: f64,
-    ) -> Result<(Vec<f64>, f64)> {
+        ratio: T,
+    ) -> Result<(Vec<T>, T)> {
         self.tied_solution_with(d, basis, c, ratio, None)
     }
 
@@ -897,26 +937,29 @@ impl<'a> March<'a> {
     /// M + (ratio u + delta) e_{c-1}^T, by Sherman-Morrison on z ratio + q.
     fn tied_solution_with(
         &self,
-        d: &StepData,
-        basis: &TiedBasis,
+        d: &StepData<T>,
+        basis: &TiedBasis<T>,
         c: usize,
-        ratio: f64,
-        q: Option<&[f64]>,
-    ) -> Result<(Vec<f64>, f64)> {
+        ratio: T,
+        q: Option<&[T]>,
+    ) -> Result<(Vec<T>, T)> {
         let last = c - 1;
         let z = &basis.system.z;
-        let zw: Vec<f64> = match q {
-            Some(q) => z.iter().zip(q).map(|(z, q)| ratio * z + q).collect(),
-            None => z.iter().map(|z| ratio * z).collect(),
+        let zw: Vec<T> = match q {
+            Some(q) => z.iter().zip(q).map(|(&z, &q)| ratio * z + q).collect(),
+            None => z.iter().map(|&z| ratio * z).collect(),
         };
-        let den = 1.0 + zw[last];
+        let den = zw[last] + 1.0;
         if !(den.abs() > 1e-300) || !den.is_finite() {
             return Err(singular_system(d.t));
         }
         let k = basis.y[last] / den;
-        let mut p: Vec<f64> = basis.y.iter().zip(&zw).map(|(y, z)| y - k * z).collect();
+        let mut p: Vec<T> = basis.y.iter().zip(&zw).map(|(&y, &z)| y - k * z).collect();
         p.push(ratio * p[last]);
-        let force = p.iter().enumerate().map(|(j, v)| self.weight(j) * v).sum();
+        let force = p
+            .iter()
+            .enumerate()
+            .fold(T::of(0.0), |s, (j, &v)| s + self.weight(j) * v);
         Ok((p, force))
     }
 
@@ -926,17 +969,17 @@ impl<'a> March<'a> {
     /// [`March::tied_solution_with`].
     fn behind_corrections(
         &self,
-        model: &EdgeModel,
-        theta: f64,
+        model: &EdgeModel<T>,
+        theta: T,
         c: usize,
-        basis: &TiedBasis,
-    ) -> Vec<f64> {
+        basis: &TiedBasis<T>,
+    ) -> Vec<T> {
         let rules = self.tables.shape_rules();
         let neighbour = model.neighbour_mean(theta, self.dx);
-        let mut q = vec![0.0; c];
+        let mut q = vec![T::of(0.0); c];
         for (k, col) in (1..).zip(&basis.system.behind) {
             let coef = model.shape_term(theta, self.dx, c, k, rules) / neighbour;
-            for (qi, v) in q.iter_mut().zip(col) {
+            for (qi, &v) in q.iter_mut().zip(col) {
                 *qi += coef * v;
             }
         }
@@ -948,12 +991,12 @@ impl<'a> March<'a> {
     /// edge; the edge is the root of that condition in the cell (regula falsi), the cell
     /// moving outwards or inwards when the root lies beyond it. Returns (c, b, pressures,
     /// force).
-    fn free_edge(&self, d: &StepData, model: EdgeModel, start: usize) -> Result<StepSet> {
+    fn free_edge(&self, d: &StepData<T>, model: EdgeModel<T>, start: usize) -> Result<StepSet<T>> {
         let dx = self.dx;
         let top = (d.fbar.len() - 1).min(self.kcap);
         // one factorisation per edge cell tried, shared by the iterations on theta
-        let mut bases: Vec<Option<TiedBasis>> = Vec::new();
-        let mut residual = |c: usize, theta: f64| -> Result<(f64, Vec<f64>, f64)> {
+        let mut bases: Vec<Option<TiedBasis<T>>> = Vec::new();
+        let mut residual = |c: usize, theta: T| -> Result<(T, Vec<T>, T)> {
             let (ratio, gap) = model.tie(theta, dx, c, Some(self.tables.shape_rules()));
             if bases.len() <= c {
                 bases.resize_with(c + 1, || None);
@@ -962,7 +1005,7 @@ impl<'a> March<'a> {
                 bases[c] = Some(self.tied_basis(d, c)?);
             }
             let basis = bases[c].as_ref().ok_or_else(|| ImpactError::Step {
-                time: format!("{:.6}", d.t),
+                time: format!("{:.6}", d.t.to_f64()),
                 reason: "no factorisation of the edge cell's system".into(),
             })?;
             let q = self.behind_corrections(&model, theta, c, basis);
@@ -972,41 +1015,44 @@ impl<'a> March<'a> {
             // gaps at the step's two ends
             let end_gap = self.displacement(c, &d.hist, &p) - d.target(c, f)?;
             let gap_now = match self.gap_before(c) {
-                Some(before) => 0.5 * (end_gap + before),
+                Some(before) => (end_gap + before) * 0.5,
                 None => end_gap,
             };
             Ok((gap_now - gap * p[c - 1], p, f))
         };
         let mut c = start.clamp(2, top.max(2));
         let mut tried = vec![false; top + 2];
+        let (zero, one) = (T::of(0.0), T::of(1.0));
         loop {
             tried[c] = true;
-            let (r1, p1, f1) = residual(c, 1.0)?;
+            let (r1, p1, f1) = residual(c, one)?;
             if r1 < 0.0 && c < top && !tried[c + 1] {
                 c += 1;
                 continue;
             }
-            let (r0, p0, f0) = residual(c, 0.0)?;
+            let (r0, p0, f0) = residual(c, zero)?;
             if r0 > 0.0 && c > 2 && !tried[c - 1] {
                 c -= 1;
                 continue;
             }
-            let edge = |theta: f64| (c as f64 - 0.5 + theta) * dx;
+            let edge = |theta: T| (theta + (c as f64 - 0.5)) * dx;
             if r1 <= 0.0 {
-                return Ok((c, edge(1.0), p1, f1));
+                return Ok((c, edge(one), p1, f1));
             }
             if r0 >= 0.0 {
-                return Ok((c, edge(0.0), p0, f0));
+                return Ok((c, edge(zero), p0, f0));
             }
             // regula falsi (Illinois) on theta in (0, 1)
-            let (mut a, mut fa, mut b, mut fb) = (0.0, r0, 1.0, r1);
-            let mut best = (p0, f0, 0.0);
+            let (mut a, mut fa, mut b, mut fb) = (zero, r0, one, r1);
+            let mut best = (p0, f0, zero);
             let mut side = 0;
-            for _ in 0..60 {
+            for _ in 0..ITERATIONS * T::BITS as usize / 53 + 10 {
                 let x = (a * fb - b * fa) / (fb - fa);
                 let (rx, px, fx) = residual(c, x)?;
                 best = (px, fx, x);
-                if rx.abs() <= 1e-15 * (d.h_pred.abs() + dx) || (b - a) <= 1e-13 {
+                if rx.abs() <= (d.h_pred.abs() + dx) * tolerance::<T>(1e-15)
+                    || (b - a) <= tolerance::<T>(1e-13)
+                {
                     break;
                 }
                 if (rx > 0.0) == (fb > 0.0) {
@@ -1032,27 +1078,28 @@ impl<'a> March<'a> {
 
     /// The mean gap over cell i at the end of the previous step, w_i - (h - mean f_i), if
     /// that step has the cell's displacement.
-    fn gap_before(&self, i: usize) -> Option<f64> {
+    fn gap_before(&self, i: usize) -> Option<T> {
         let s = self.steps.last()?;
-        let w = s.w.get(i)? + s.ws.get(i).copied().unwrap_or(0.0);
+        let w = *s.w.get(i)? + s.ws.get(i).copied().unwrap_or(T::of(0.0));
         Some(w - (s.h - self.profile_mean(i)?))
     }
 
     /// The Signorini edge inside the last cell: the zero of C (b - x)^(1/2) through the last
     /// two cell pressures, kept within the last cell.
-    fn edge_fit(&self, k: usize, p: &[f64]) -> f64 {
+    fn edge_fit(&self, k: usize, p: &[T]) -> T {
         let dx = self.dx;
-        let xk = k as f64 * dx;
+        let xk = dx * k as f64;
         if k == 0 || p.len() < 2 {
-            return xk + 0.5 * dx;
+            return xk + dx * 0.5;
         }
-        let (a, c) = (p[k - 1].max(0.0).powi(2), p[k].max(0.0).powi(2));
+        let zero = T::of(0.0);
+        let (a, c) = (p[k - 1].max(zero).powi(2), p[k].max(zero).powi(2));
         let b = if a > c {
             (xk * a - (xk - dx) * c) / (a - c)
         } else {
-            xk + 0.5 * dx
+            xk + dx * 0.5
         };
-        b.clamp(xk, xk + dx)
+        b.max(xk).min(xk + dx)
     }
 }
 

@@ -8,6 +8,7 @@
 use std::sync::Arc;
 
 use crate::error::{invalid, Result};
+use crate::scalar::Scalar;
 
 /// A symmetric convex striker profile (dimensionless: x/R, f/R).
 #[derive(Clone)]
@@ -116,20 +117,28 @@ impl Profile {
     }
 
     /// f(x) (symmetric), `None` beyond the profile's extent (the circle's radius, a flat
-    /// punch's edge, a table's last point).
-    pub fn height(&self, x: f64) -> Option<f64> {
+    /// punch's edge, a table's last point), at the precision of x (a user's function is
+    /// evaluated in f64: [`Profile::exact_at_every_precision`]).
+    pub fn height<T: Scalar>(&self, x: T) -> Option<T> {
         let x = x.abs();
         match self {
             Profile::Circle { radius } => {
-                (x < *radius).then(|| x * x / (radius + (radius * radius - x * x).sqrt()))
+                let r = T::input(*radius);
+                (x < r).then(|| x * x / (r + (r * r - x * x).sqrt()))
             }
-            Profile::Parabola { radius } => Some(x * x / (2.0 * radius)),
-            Profile::Power { a, k } => Some(a * x.powf(*k)),
-            Profile::Wedge { theta_deg } => Some(x / theta_deg.to_radians().tan()),
-            Profile::Flat { half_width } => (x <= *half_width).then_some(0.0),
+            Profile::Parabola { radius } => Some(x * x / (T::input(*radius) * 2.0)),
+            Profile::Power { a, k } => Some(x.powf(&T::input(*k)) * T::input(*a)),
+            Profile::Wedge { theta_deg } => Some(x / tan_deg::<T>(*theta_deg)),
+            Profile::Flat { half_width } => (x <= T::input(*half_width)).then(|| T::of(0.0)),
             Profile::Table(t) => interpolate(t, x),
-            Profile::Function { f, max_x } => (x <= *max_x).then(|| f(x)),
+            Profile::Function { f, max_x } => (x <= *max_x).then(|| T::of(f(x.to_f64()))),
         }
+    }
+
+    /// Whether [`Profile::height`] is exact at every precision: all but a user's function,
+    /// which is evaluated in f64.
+    pub fn exact_at_every_precision(&self) -> bool {
+        !matches!(self, Profile::Function { .. })
     }
 
     /// The extent of the profile: the largest contact half-width it admits.
@@ -144,46 +153,59 @@ impl Profile {
     }
 
     /// The kinematic edge (eq (4)): the half-width b with f(b) = h for a penetration h >= 0
-    /// (the flat punch's edge for every h > 0). `None` when h exceeds the profile's extent.
-    pub fn kinematic_edge(&self, h: f64) -> Option<f64> {
+    /// (the flat punch's edge for every h > 0), at the precision of h. `None` when h exceeds
+    /// the profile's extent.
+    pub fn kinematic_edge<T: Scalar>(&self, h: T) -> Option<T> {
+        let zero = T::of(0.0);
         if h <= 0.0 {
-            return Some(0.0);
+            return Some(zero);
         }
         match self {
-            Profile::Circle { radius } => (h < *radius).then(|| (h * (2.0 * radius - h)).sqrt()),
-            Profile::Parabola { radius } => Some((2.0 * radius * h).sqrt()),
-            Profile::Power { a, k } => Some((h / a).powf(1.0 / k)),
-            Profile::Wedge { theta_deg } => Some(h * theta_deg.to_radians().tan()),
-            Profile::Flat { half_width } => Some(*half_width),
+            Profile::Circle { radius } => {
+                let r = T::input(*radius);
+                (h < r).then(|| (h * (r * 2.0 - h)).sqrt())
+            }
+            Profile::Parabola { radius } => Some((h * T::input(*radius) * 2.0).sqrt()),
+            Profile::Power { a, k } => Some((h / T::input(*a)).powf(&(T::of(1.0) / T::input(*k)))),
+            Profile::Wedge { theta_deg } => Some(h * tan_deg::<T>(*theta_deg)),
+            Profile::Flat { half_width } => Some(T::input(*half_width)),
             _ => {
-                // bisection on the increasing profile
-                let top = self.extent();
+                // bisection on the increasing profile, to the precision's last bit
+                let top = T::of(self.extent());
                 if self.height(top)? < h {
                     return None;
                 }
-                let (mut lo, mut hi) = (0.0, top);
-                for _ in 0..200 {
-                    let mid = 0.5 * (lo + hi);
+                let (mut lo, mut hi) = (zero, top);
+                for _ in 0..(T::BITS + 60) {
+                    let mid = (lo + hi) * 0.5;
                     if self.height(mid)? < h {
                         lo = mid;
                     } else {
                         hi = mid;
                     }
                 }
-                Some(0.5 * (lo + hi))
+                Some((lo + hi) * 0.5)
             }
         }
     }
 }
 
-fn interpolate(t: &[(f64, f64)], x: f64) -> Option<f64> {
+/// tan(theta) for theta in degrees, at the precision T (the wedge's cot of its half-angle
+/// inverted).
+fn tan_deg<T: Scalar>(theta_deg: f64) -> T {
+    let one = T::of(1.0);
+    (T::input(theta_deg) * one.pi() / 180.0).tan()
+}
+
+fn interpolate<T: Scalar>(t: &[(f64, f64)], x: T) -> Option<T> {
     let last = t.last()?;
     if x > last.0 {
         return None;
     }
-    let i = t.partition_point(|p| p.0 <= x).clamp(1, t.len() - 1);
+    let i = t.partition_point(|p| x >= p.0).clamp(1, t.len() - 1);
     let (a, b) = (t[i - 1], t[i]);
-    Some(a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0))
+    let (ax, ay, bx, by) = (T::input(a.0), T::input(a.1), T::input(b.0), T::input(b.1));
+    Some((x - ax) * (by - ay) / (bx - ax) + ay)
 }
 
 fn check_samples(t: &[(f64, f64)], what: &'static str) -> Result<()> {
