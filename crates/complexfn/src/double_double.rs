@@ -100,6 +100,104 @@ fn two_prod(a: f64, b: f64) -> (f64, f64) {
     }
 }
 
+// ---- a loop of products added ----------------------------------------------------------
+
+/// `acc[k] += b[k] c` for every k, each step the operations of `acc[k] + b[k] * c` (the
+/// product as `mul_dd` forms it, the sum as `add_dd`): the same results, finite or not,
+/// without the branches that keep the loop scalar. Where the processor has them (detected at
+/// run time, so the build needs no target flag), the loop runs with AVX2 and fused
+/// multiply-adds, whose `two_prod` is exact as Dekker's split is.
+pub(crate) fn mul_add_slice(acc: &mut [Dd], b: &[Dd], c: Dd) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the features the function is compiled for were detected at run time.
+            unsafe { mul_add_slice_fma(acc, b, c) };
+            return;
+        }
+    }
+    mul_add_slice_body::<false>(acc, b, c);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn mul_add_slice_fma(acc: &mut [Dd], b: &[Dd], c: Dd) {
+    mul_add_slice_body::<true>(acc, b, c);
+}
+
+#[inline(always)]
+fn mul_add_slice_body<const FMA: bool>(acc: &mut [Dd], b: &[Dd], c: Dd) {
+    for (a, x) in acc.iter_mut().zip(b) {
+        *a = mul_add_step::<FMA>(*a, *x, c);
+    }
+}
+
+/// `a + x c` with the operations of `add_dd(a, mul_dd(x, c))` and their results, finite or
+/// not, without branches.
+#[inline(always)]
+fn mul_add_step<const FMA: bool>(a: Dd, x: Dd, c: Dd) -> Dd {
+    // x c (`mul_dd`; its renormalisation of a zero low part gives the same pair)
+    let (p, e) = if FMA {
+        let p = x.hi * c.hi;
+        (p, x.hi.mul_add(c.hi, -p))
+    } else {
+        two_prod(x.hi, c.hi)
+    };
+    let (p, e) = quick_two_sum(p, e + (x.hi * c.lo + x.lo * c.hi));
+    // a + x c (`add_dd`)
+    let (s, se) = two_sum(a.hi, p);
+    let (t, f) = two_sum(a.lo, e);
+    let (s2, se) = quick_two_sum(s, se + t);
+    let (hi, lo) = quick_two_sum(s2, se + f);
+    // a non-finite leading sum (or product) is the result, as in `add_dd` and `mul_dd`
+    if s.is_finite() {
+        Dd { hi, lo }
+    } else {
+        Dd { hi: s, lo: 0.0 }
+    }
+}
+
+/// The lanes of [`dot_add`].
+const DOT_LANES: usize = 4;
+
+/// `acc + Sum_i a_i b_i`, the products and sums those of `mul_add_assign`, summed in
+/// [`DOT_LANES`] interleaved partial sums (i mod 4) added at the end: the error bound of a
+/// sum in any order (each addition within a few units of 2^-106 of its result), with the
+/// lanes in the vector registers where the processor has AVX2 and FMA (as [`mul_add_slice`]).
+pub(crate) fn dot_add(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the features the function is compiled for were detected at run time.
+            return unsafe { dot_add_fma(acc, a, b) };
+        }
+    }
+    dot_add_body::<false>(acc, a, b)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn dot_add_fma(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
+    dot_add_body::<true>(acc, a, b)
+}
+
+#[inline(always)]
+fn dot_add_body<const FMA: bool>(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
+    let n = a.len().min(b.len());
+    let mut lanes = [Dd::from_f64(0.0); DOT_LANES];
+    let (ca, ra) = a[..n].split_at(n / DOT_LANES * DOT_LANES);
+    let (cb, rb) = b[..n].split_at(n / DOT_LANES * DOT_LANES);
+    for (xa, xb) in ca.chunks_exact(DOT_LANES).zip(cb.chunks_exact(DOT_LANES)) {
+        for j in 0..DOT_LANES {
+            lanes[j] = mul_add_step::<FMA>(lanes[j], xa[j], xb[j]);
+        }
+    }
+    for (j, (x, y)) in ra.iter().zip(rb).enumerate() {
+        lanes[j] = mul_add_step::<FMA>(lanes[j], *x, *y);
+    }
+    acc + ((lanes[0] + lanes[1]) + (lanes[2] + lanes[3]))
+}
+
 // ---- constants -------------------------------------------------------------------------
 
 /// pi as three doubles (the first two are [`Real::pi`]).
@@ -483,6 +581,14 @@ impl Display for Dd {
 // ---- the Real backend ------------------------------------------------------------------
 
 impl Real for Dd {
+    #[inline]
+    fn mul_add_slice(acc: &mut [Self], b: &[Self], c: &Self) {
+        mul_add_slice(acc, b, *c);
+    }
+    #[inline]
+    fn dot_add(&mut self, a: &[Self], b: &[Self]) {
+        *self = dot_add(*self, a, b);
+    }
     #[inline]
     fn from_f64_prec(x: f64, _bits: u32) -> Self {
         Dd::from_f64(x)
