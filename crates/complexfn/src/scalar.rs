@@ -151,6 +151,22 @@ pub trait Real:
             self.mul_add_assign(x, y);
         }
     }
+    /// `out[i] = a[i] b[i]` (over the common length); a backend may run the loop faster, with
+    /// the same results.
+    #[inline]
+    fn mul_slice(out: &mut [Self], a: &[Self], b: &[Self]) {
+        for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+            *o = x.clone() * y;
+        }
+    }
+    /// `out[i] = a[i]/b[i]` (over the common length); a backend may run the loop faster, with
+    /// the same results.
+    #[inline]
+    fn div_slice(out: &mut [Self], a: &[Self], b: &[Self]) {
+        for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+            *o = x.clone() / y;
+        }
+    }
 
     /// `x` at the precision of `self`.
     #[inline]

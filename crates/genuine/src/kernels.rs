@@ -164,12 +164,15 @@ pub fn uniform_load<T: Real>(p: T, z: Cx<T>) -> Cx<T> {
 pub(crate) struct CauchySums<S> {
     loads: usize,
     classes: usize,
-    /// v_i^2
+    /// v_i^2, the samples ordered by class
     v2: Vec<S>,
-    /// the class of each sample
-    class: Vec<usize>,
-    /// per sample, per load: (a, b)
-    ab: Vec<(S, S)>,
+    /// the range of each class in that order
+    ranges: Vec<std::ops::Range<usize>>,
+    /// per load, per sample in that order: a and b = a v
+    a: Vec<Vec<S>>,
+    b: Vec<Vec<S>>,
+    /// ones, for sums and additions of a constant through the slice operations
+    ones: Vec<S>,
     /// per class, per load, per power m < `terms`: (Sum a v^(2m), Sum b v^(2m))
     moments: Vec<(S, S)>,
     terms: usize,
@@ -194,29 +197,43 @@ impl<S: Real> CauchySums<S> {
         let loads = vhw.len();
         let n = v.len();
         let zero = like.zero();
-        let v2: Vec<S> = v.iter().map(|x| x.clone().sqr()).collect();
-        let mut ab = Vec::with_capacity(n * loads);
-        for (i, vi) in v.iter().enumerate() {
-            for h in vhw {
-                let a = h[i].clone() * 2.0;
-                let b = a.clone() * vi;
-                ab.push((a, b));
-            }
-        }
+        // the samples ordered by class (each class then a contiguous range)
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by_key(|&i| class[i]);
+        let ranges = (0..classes)
+            .map(|k| {
+                let start = order.partition_point(|&i| class[i] < k);
+                let end = order.partition_point(|&i| class[i] <= k);
+                start..end
+            })
+            .collect();
+        let v2: Vec<S> = order.iter().map(|&i| v[i].clone().sqr()).collect();
+        let a: Vec<Vec<S>> = vhw
+            .iter()
+            .map(|h| order.iter().map(|&i| h[i].clone() * 2.0).collect())
+            .collect();
+        let b: Vec<Vec<S>> = a
+            .iter()
+            .map(|ac| {
+                ac.iter()
+                    .zip(&order)
+                    .map(|(x, &i)| x.clone() * &v[i])
+                    .collect()
+            })
+            .collect();
         let mut moments = vec![(zero.clone(), zero.clone()); classes * loads * terms];
         let mut pw = zero.clone();
-        for i in 0..n {
+        for (j, &i) in order.iter().enumerate() {
             // v^(2m) by repeated products: the moments carry the same relative round-off as
             // the terms they sum
             pw.clone_from(&like.one());
             for m in 0..terms {
                 for c in 0..loads {
-                    let (a, b) = &ab[i * loads + c];
                     let slot = &mut moments[(class[i] * loads + c) * terms + m];
-                    slot.0.mul_add_assign(a, &pw);
-                    slot.1.mul_add_assign(b, &pw);
+                    slot.0.mul_add_assign(&a[c][j], &pw);
+                    slot.1.mul_add_assign(&b[c][j], &pw);
                 }
-                pw *= &v2[i];
+                pw *= &v2[j];
             }
         }
         let v2_max = v2.iter().fold(0.0_f64, |m, x| m.max(x.to_f64())) * (1.0 + 1e-12);
@@ -224,8 +241,10 @@ impl<S: Real> CauchySums<S> {
             loads,
             classes,
             v2,
-            class: class.to_vec(),
-            ab,
+            ranges,
+            a,
+            b,
+            ones: vec![like.one(); n],
             moments,
             terms,
             v2_max,
@@ -272,41 +291,35 @@ impl<S: Real> CauchySums<S> {
         }
         let (zr, zi) = (z2.re, z2.im);
         let zi2 = zi.clone().sqr();
-        let one = zi.one();
-        // per class and load: Sum a q/|.|^2, Sum a/|.|^2, Sum b q/|.|^2, Sum b/|.|^2
-        let mut acc = vec![zero.clone(); 4 * self.classes * nl];
-        // temporaries reused across the loop (no allocation per term in MPFR)
-        let (mut q, mut n, mut inv, mut t) =
-            (zero.clone(), zero.clone(), zero.clone(), zero.clone());
-        for (i, v2i) in self.v2.iter().enumerate() {
-            // 1/(v^2 - z^2) = (q + i Im z^2)/(q^2 + (Im z^2)^2), q = v^2 - Re z^2
-            q.clone_from(v2i);
-            q -= &zr;
-            n.clone_from(&zi2);
-            n.mul_add_assign(&q, &q);
-            inv.clone_from(&one);
-            inv /= &n;
-            let base = 4 * self.class[i] * nl;
-            for (c, (a, b)) in self.ab[i * nl..(i + 1) * nl].iter().enumerate() {
-                let o = &mut acc[base + 4 * c..base + 4 * c + 4];
-                t.clone_from(a);
-                t *= &inv;
-                o[0].mul_add_assign(&t, &q);
-                o[1] += &t;
-                t.clone_from(b);
-                t *= &inv;
-                o[2].mul_add_assign(&t, &q);
-                o[3] += &t;
+        let n = self.v2.len();
+        let ones = &self.ones;
+        // 1/(v^2 - z^2) = (q + i Im z^2)/(q^2 + (Im z^2)^2), q = v^2 - Re z^2, by the slice
+        // operations of the precision layer
+        let mut q = self.v2.clone();
+        S::mul_add_slice(&mut q, ones, &-zr);
+        let mut den = vec![zero.clone(); n];
+        S::mul_slice(&mut den, &q, &q);
+        S::mul_add_slice(&mut den, ones, &zi2);
+        let mut inv = vec![zero.clone(); n];
+        S::div_slice(&mut inv, ones, &den);
+        let mut t = den;
+        let mut out = Vec::with_capacity(self.classes * nl);
+        for r in &self.ranges {
+            for c in 0..nl {
+                // Sum a q/|.|^2 + i Im z^2 Sum a/|.|^2, and the same for b
+                let mut sum = |w: &[S]| {
+                    S::mul_slice(&mut t[r.clone()], &w[r.clone()], &inv[r.clone()]);
+                    let (mut re, mut im) = (zero.clone(), zero.clone());
+                    re.dot_add(&t[r.clone()], &q[r.clone()]);
+                    im.dot_add(&t[r.clone()], &ones[r.clone()]);
+                    Cx::new(re, im * &zi)
+                };
+                let fa = sum(&self.a[c]);
+                let fb = sum(&self.b[c]);
+                out.push((fa, fb));
             }
         }
-        acc.chunks_exact(4)
-            .map(|o| {
-                (
-                    Cx::new(o[0].clone(), o[1].clone() * &zi),
-                    Cx::new(o[2].clone(), o[3].clone() * &zi),
-                )
-            })
-            .collect()
+        out
     }
 }
 

@@ -295,6 +295,24 @@ impl ContourProbe {
     }
 }
 
+/// The row rule's abscissae, weights and doubled abscissae as slices (the operands of the
+/// rows' slice operations).
+struct RowColumns<T> {
+    v: Vec<T>,
+    w: Vec<T>,
+    v2: Vec<T>,
+}
+
+impl<T: Real> RowColumns<T> {
+    fn new(samples: &[Sample<T>]) -> Self {
+        RowColumns {
+            v: samples.iter().map(|s| s.v.clone()).collect(),
+            w: samples.iter().map(|s| s.w.clone()).collect(),
+            v2: samples.iter().map(|s| s.v.clone() * 2.0).collect(),
+        }
+    }
+}
+
 /// The collocation rows of the fine fit's basis by the grid index of their point (t = k h/4):
 /// a fit whose basis is a part of it (the same families, a lower degree) takes its rows at the
 /// points it shares from there (the row of a basis function does not depend on the others,
@@ -519,7 +537,15 @@ impl<T: Real> Problem<T> {
 
     /// The collocation row of the singular integral equation at x in (0, p), from the sampled
     /// basis values `bv` (row-major, one row of `kk` values per sample).
-    fn sie_row(&self, basis: &Basis<T>, x: &T, pmx: &T, samples: &[Sample<T>], bv: &[T]) -> Vec<T> {
+    fn sie_row(
+        &self,
+        basis: &Basis<T>,
+        x: &T,
+        pmx: &T,
+        samples: &[Sample<T>],
+        cols: &RowColumns<T>,
+        bv: &[T],
+    ) -> Vec<T> {
         let kk = basis.len();
         let (p1, p2, l_s) = self.ray.cut_values(x);
         let a1 = p1.clone().recip();
@@ -531,21 +557,35 @@ impl<T: Real> Problem<T> {
         let a12 = a1.clone() - &a2;
         let log_term = (pmx.clone() / x).ln();
         let pc = x.pi() * (self.beta.clone() + &self.gamma) * c;
-        // Sum_n w_n (f_n - f_x)/(v_n - x) = Sum_n c_n B_n - f_x Sum_n w_n/(v_n - x)
-        let mut row = vec![x.zero(); kk];
-        let mut wsum = x.zero();
-        for (s, b) in samples.iter().zip(bv.chunks_exact(kk)) {
-            let dv = if s.pv < s.v {
+        // Sum_n w_n (f_n - f_x)/(v_n - x) = Sum_n c_n B_n - f_x Sum_n w_n/(v_n - x), with
+        // c_n = w_n/(v_n - x) 2v_n/(v_n + x) (a1 - a2 v_n/x): one division per sample, the
+        // loops over the samples in the slice operations of the precision layer
+        let zero = x.zero();
+        let n = samples.len();
+        let mut dv = Vec::with_capacity(n);
+        let mut vpx = Vec::with_capacity(n);
+        for s in samples {
+            dv.push(if s.pv < s.v {
                 pmx.clone() - &s.pv
             } else {
                 s.v.clone() - x
-            };
-            // w/(v - x) and cn = w/(v - x) 2v/(v + x) (a1 - a2 v/x), one division
-            let vpx = s.v.clone() + x;
-            let r = s.w.clone() / (dv * &vpx);
-            wsum.mul_add_assign(&r, &vpx);
-            let cn = r * &s.v * 2.0 * (a1.clone() - a2x.clone() * &s.v);
-            T::mul_add_slice(&mut row, b, &cn);
+            });
+            vpx.push(s.v.clone() + x);
+        }
+        let mut t = vec![zero.clone(); n];
+        T::mul_slice(&mut t, &dv, &vpx);
+        // r = w/((v - x)(v + x)); Sum w/(v - x) = Sum r (v + x)
+        let mut r = dv;
+        T::div_slice(&mut r, &cols.w, &t);
+        let mut wsum = zero.clone();
+        wsum.dot_add(&r, &vpx);
+        let mut g = vec![a1.clone(); n];
+        T::mul_add_slice(&mut g, &cols.v, &-a2x);
+        T::mul_slice(&mut t, &r, &cols.v2);
+        T::mul_slice(&mut r, &t, &g);
+        let mut row = vec![zero; kk];
+        for (cn, b) in r.iter().zip(bv.chunks_exact(kk)) {
+            T::mul_add_slice(&mut row, b, cn);
         }
         let fx_coef = log_term - wsum;
         for (r, ph) in row.iter_mut().zip(&phi_x) {
@@ -674,6 +714,7 @@ impl<T: Real> Problem<T> {
         for (s, out) in rows.iter().zip(bv.chunks_exact_mut(kk)) {
             basis.fill(&s.fam, &s.t, out);
         }
+        let cols = RowColumns::new(rows);
         let pts =
             self.collocation_points(((kk as f64) * opts.oversample).ceil() as usize, opts.h_quad);
         let mpts = pts.len();
@@ -685,7 +726,7 @@ impl<T: Real> Problem<T> {
         }
         let mut a = Matrix::zeros(mpts + 1, kk, like);
         for (i, (k, x, pmx)) in pts.iter().enumerate() {
-            let row = cache.row(basis, *k, || self.sie_row(basis, x, pmx, rows, &bv));
+            let row = cache.row(basis, *k, || self.sie_row(basis, x, pmx, rows, &cols, &bv));
             let norm = row
                 .iter()
                 .fold(like.zero(), |m, v| m.max(v.clone().abs()))
