@@ -685,18 +685,40 @@ impl<T: Real> Problem<T> {
 
     /// The slope values h(v) w at the samples for coefficients `coef` of `basis`.
     fn weighted_slopes(&self, basis: &Basis<T>, samples: &[Sample<T>], coef: &[T]) -> Vec<T> {
-        let mut buf = vec![self.p.zero(); basis.len()];
-        samples
+        self.weighted_slopes_many(basis, samples, &[(basis, coef)])
+            .pop()
+            .unwrap_or_default()
+    }
+
+    /// [`Self::weighted_slopes`] for several coefficient sets, each of a basis that is a part of
+    /// `full` (the same families, at most its degree): the basis is filled once per sample at
+    /// the full degree, and each set sums its own columns (the values a fill at its degree
+    /// gives, the Chebyshev recurrence being the same).
+    fn weighted_slopes_many(
+        &self,
+        full: &Basis<T>,
+        samples: &[Sample<T>],
+        sets: &[(&Basis<T>, &[T])],
+    ) -> Vec<Vec<T>> {
+        let big = full.degree();
+        debug_assert!(sets
             .iter()
-            .map(|s| {
-                basis.fill(&s.fam, &s.t, &mut buf);
-                let mut acc = self.p.zero();
-                for (b, c) in buf.iter().zip(coef) {
-                    acc.mul_add_assign(b, c);
+            .all(|(b, _)| b.families() == full.families() && b.degree() <= big));
+        let zero = self.p.zero();
+        let mut buf = vec![zero.clone(); full.len()];
+        let mut out = vec![Vec::with_capacity(samples.len()); sets.len()];
+        for s in samples {
+            full.fill(&s.fam, &s.t, &mut buf);
+            for ((b, coef), o) in sets.iter().zip(out.iter_mut()) {
+                let n = b.degree();
+                let mut acc = zero.clone();
+                for (vals, c) in buf.chunks_exact(big).zip(coef.chunks_exact(n)) {
+                    acc.dot_add(&vals[..n], c);
                 }
-                acc * &s.w
-            })
-            .collect()
+                o.push(acc * &s.w);
+            }
+        }
+        out
     }
 
     /// The collocation least-squares solve: coefficients normalised by the force moment, and
@@ -869,12 +891,14 @@ impl<T: CachedRules> GenuineCase<T> {
             fits.push((b, c, r));
         }
         fits.extend(other_fit);
-        let hw = prob.weighted_slopes(&basis, &cont, &coef);
+        let mut sets = vec![(&basis, coef.as_slice())];
+        sets.extend(fits.iter().map(|(b, c, _)| (b, c.as_slice())));
+        let mut slopes = prob.weighted_slopes_many(&basis, &cont, &sets).into_iter();
+        let hw = slopes.next().unwrap_or_default();
         // the other fits' loads through their differences from the fine one
-        let diffs: Vec<Vec<f64>> = fits
-            .iter()
-            .map(|(b, c, _)| {
-                prob.weighted_slopes(b, &cont, c)
+        let diffs: Vec<Vec<f64>> = slopes
+            .map(|other| {
+                other
                     .into_iter()
                     .zip(&hw)
                     .zip(&cont)
