@@ -100,6 +100,231 @@ fn two_prod(a: f64, b: f64) -> (f64, f64) {
     }
 }
 
+// ---- a loop of products added ----------------------------------------------------------
+
+/// `acc[k] += b[k] c` for every k, each step the operations of `acc[k] + b[k] * c` (the
+/// product as `mul_dd` forms it, the sum as `add_dd`): the same results, finite or not,
+/// without the branches that keep the loop scalar. Where the processor has them (detected at
+/// run time, so the build needs no target flag), the loop runs with AVX2 and fused
+/// multiply-adds, whose `two_prod` is exact as Dekker's split is.
+pub(crate) fn mul_add_slice(acc: &mut [Dd], b: &[Dd], c: Dd) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the features the function is compiled for were detected at run time.
+            unsafe { mul_add_slice_fma(acc, b, c) };
+            return;
+        }
+    }
+    mul_add_slice_body::<false>(acc, b, c);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn mul_add_slice_fma(acc: &mut [Dd], b: &[Dd], c: Dd) {
+    mul_add_slice_body::<true>(acc, b, c);
+}
+
+#[inline(always)]
+fn mul_add_slice_body<const FMA: bool>(acc: &mut [Dd], b: &[Dd], c: Dd) {
+    for (a, x) in acc.iter_mut().zip(b) {
+        *a = mul_add_step::<FMA>(*a, *x, c);
+    }
+}
+
+/// `a + x c` with the operations of `add_dd(a, mul_dd(x, c))` and their results, finite or
+/// not, without branches (the tests of non-finite values and zero low parts compile to
+/// selects).
+#[inline(always)]
+fn mul_add_step<const FMA: bool>(a: Dd, x: Dd, c: Dd) -> Dd {
+    let p = x.hi * c.hi;
+    let m = mul_nb::<FMA>(x, c);
+    // a non-finite product is `mul_dd`'s result, and a non-finite leading sum `add_dd`'s
+    let s = a.hi + if p.is_finite() { m.hi } else { p };
+    if s.is_finite() {
+        add_nb(a, m)
+    } else {
+        Dd { hi: s, lo: 0.0 }
+    }
+}
+
+/// `two_prod` as the loops compile it: the fused multiply-add where enabled.
+#[inline(always)]
+fn two_prod_nb<const FMA: bool>(a: f64, b: f64) -> (f64, f64) {
+    if FMA {
+        let p = a * b;
+        (p, a.mul_add(b, -p))
+    } else {
+        two_prod(a, b)
+    }
+}
+
+/// `mul_dd` for a finite product, without branches (the renormalisations' tests of a zero
+/// low part compile to selects).
+#[inline(always)]
+fn mul_nb<const FMA: bool>(x: Dd, c: Dd) -> Dd {
+    let (p, e) = two_prod_nb::<FMA>(x.hi, c.hi);
+    Dd::quick(p, e + (x.hi * c.lo + x.lo * c.hi))
+}
+
+/// `mul_f64` for a finite product, without branches.
+#[inline(always)]
+fn mul_f64_nb<const FMA: bool>(x: Dd, c: f64) -> Dd {
+    let (p, e) = two_prod_nb::<FMA>(x.hi, c);
+    Dd::quick(p, e + x.lo * c)
+}
+
+/// `add_dd` for a finite sum, without branches.
+#[inline(always)]
+fn add_nb(a: Dd, b: Dd) -> Dd {
+    let (s, e) = two_sum(a.hi, b.hi);
+    let (t, f) = two_sum(a.lo, b.lo);
+    let e = e + t;
+    let (s, e) = if e == 0.0 {
+        (s, e)
+    } else {
+        quick_two_sum(s, e)
+    };
+    Dd::quick(s, e + f)
+}
+
+/// `div_dd` for a finite quotient whose numerator is at most 1e307, without branches.
+#[inline(always)]
+fn div_nb<const FMA: bool>(a: Dd, b: Dd) -> Dd {
+    let q1 = a.hi / b.hi;
+    let r = add_nb(a, -mul_f64_nb::<FMA>(b, q1));
+    let q2 = r.hi / b.hi;
+    let r = add_nb(r, -mul_f64_nb::<FMA>(b, q2));
+    let q3 = r.hi / b.hi;
+    let q = Dd::quick(q1, q2);
+    let (s, e) = two_sum(q.hi, q3);
+    Dd::quick(s, e + q.lo)
+}
+
+/// `out[i] = a[i] b[i]`, each the result of `mul_dd`, on AVX2/FMA where detected (as
+/// [`mul_add_slice`]).
+pub(crate) fn mul_slice(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the features the function is compiled for were detected at run time.
+            unsafe { mul_slice_fma(out, a, b) };
+            return;
+        }
+    }
+    mul_slice_body::<false>(out, a, b);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn mul_slice_fma(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
+    mul_slice_body::<true>(out, a, b);
+}
+
+#[inline(always)]
+fn mul_slice_body<const FMA: bool>(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
+    for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+        let p = x.hi * y.hi;
+        let m = mul_nb::<FMA>(*x, *y);
+        // a non-finite product is `mul_dd`'s result
+        *o = if p.is_finite() {
+            m
+        } else {
+            Dd { hi: p, lo: 0.0 }
+        };
+    }
+}
+
+/// `out[i] = a[i]/b[i]`, each the result of `div_dd`, on AVX2/FMA where detected (as
+/// [`mul_add_slice`]). A numerator above 1e307 (which `div_dd` scales first) sends the slice
+/// to `div_dd` itself.
+pub(crate) fn div_slice(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
+    if a.iter().any(|x| x.hi.abs() > 1e307) {
+        for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+            *o = *x / *y;
+        }
+        return;
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the features the function is compiled for were detected at run time.
+            unsafe { div_slice_fma(out, a, b) };
+            return;
+        }
+    }
+    div_slice_body::<false>(out, a, b);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn div_slice_fma(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
+    div_slice_body::<true>(out, a, b);
+}
+
+#[inline(always)]
+fn div_slice_body<const FMA: bool>(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
+    for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+        let q = div_nb::<FMA>(*x, *y);
+        // `div_dd`'s early return: a non-finite first digit, or an infinite divisor
+        let q1 = x.hi / y.hi;
+        *o = if q1.is_finite() && y.hi.is_finite() && q.hi.is_finite() {
+            q
+        } else {
+            Dd { hi: q1, lo: 0.0 }
+        };
+    }
+}
+
+/// The lanes of [`dot_add`] (a loop the compiler vectorises).
+const DOT_LANES: usize = 16;
+
+/// `acc + Sum_i a_i b_i`, the products and sums those of `mul_add_assign`, summed in
+/// [`DOT_LANES`] interleaved partial sums (i mod 16) added pairwise at the end: the error
+/// bound of a sum in any order (each addition within a few units of 2^-106 of its result),
+/// with the lanes in the vector registers where the processor has AVX2 and FMA (as
+/// [`mul_add_slice`]).
+pub(crate) fn dot_add(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
+            // SAFETY: the features the function is compiled for were detected at run time.
+            return unsafe { dot_add_fma(acc, a, b) };
+        }
+    }
+    dot_add_body::<false>(acc, a, b)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn dot_add_fma(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
+    dot_add_body::<true>(acc, a, b)
+}
+
+#[inline(always)]
+fn dot_add_body<const FMA: bool>(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
+    let n = a.len().min(b.len());
+    let mut lanes = [Dd::from_f64(0.0); DOT_LANES];
+    let (ca, ra) = a[..n].split_at(n / DOT_LANES * DOT_LANES);
+    let (cb, rb) = b[..n].split_at(n / DOT_LANES * DOT_LANES);
+    for (xa, xb) in ca.chunks_exact(DOT_LANES).zip(cb.chunks_exact(DOT_LANES)) {
+        for ((l, x), y) in lanes.iter_mut().zip(xa).zip(xb) {
+            *l = mul_add_step::<FMA>(*l, *x, *y);
+        }
+    }
+    for ((l, x), y) in lanes.iter_mut().zip(ra).zip(rb) {
+        *l = mul_add_step::<FMA>(*l, *x, *y);
+    }
+    let mut w = DOT_LANES;
+    while w > 1 {
+        w /= 2;
+        for j in 0..w {
+            lanes[j] += lanes[j + w];
+        }
+    }
+    acc + lanes[0]
+}
+
 // ---- constants -------------------------------------------------------------------------
 
 /// pi as three doubles (the first two are [`Real::pi`]).
@@ -484,6 +709,22 @@ impl Display for Dd {
 
 impl Real for Dd {
     #[inline]
+    fn mul_add_slice(acc: &mut [Self], b: &[Self], c: &Self) {
+        mul_add_slice(acc, b, *c);
+    }
+    #[inline]
+    fn dot_add(&mut self, a: &[Self], b: &[Self]) {
+        *self = dot_add(*self, a, b);
+    }
+    #[inline]
+    fn mul_slice(out: &mut [Self], a: &[Self], b: &[Self]) {
+        mul_slice(out, a, b);
+    }
+    #[inline]
+    fn div_slice(out: &mut [Self], a: &[Self], b: &[Self]) {
+        div_slice(out, a, b);
+    }
+    #[inline]
     fn from_f64_prec(x: f64, _bits: u32) -> Self {
         Dd::from_f64(x)
     }
@@ -807,6 +1048,70 @@ fn exponent(x: f64) -> i32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The slice loops give the scalar operations' results bit for bit (zeros, infinities,
+    /// overflow, NaN and numerators beyond 1e307 included), and the dot product's lanes agree
+    /// with the sum in order to its rounding.
+    #[test]
+    fn slice_loops_equal_the_scalar_operations() {
+        let mut vals = vec![
+            Dd::from_f64(0.0),
+            Dd::from_f64(-0.0),
+            Dd::from_f64(f64::INFINITY),
+            Dd::from_f64(f64::NAN),
+            Dd::from_f64(1e300),
+            Dd::from_f64(-3e-300),
+            Dd::from_f64(1.5e308),
+        ];
+        let mut x = 0.123_456_789_f64;
+        for _ in 0..200 {
+            x = (x * 3.987_654_321 + 0.1).fract();
+            let e = ((x * 1000.0) as i32 % 60) - 30;
+            let hi = (x - 0.5) * pow2(e);
+            vals.push(Dd::new(hi, hi * (x - 0.3) * 1e-17));
+        }
+        let n = vals.len();
+        let b: Vec<Dd> = (0..n).map(|i| vals[(i * 7 + 3) % n]).collect();
+        let same = |u: &Dd, v: &Dd| {
+            (u.hi.to_bits() == v.hi.to_bits() || (u.hi.is_nan() && v.hi.is_nan()))
+                && (u.lo == v.lo || (u.lo.is_nan() && v.lo.is_nan()))
+        };
+        for c in [vals[9], vals[4], vals[2], vals[0]] {
+            let mut acc = b.clone();
+            Real::mul_add_slice(&mut acc, &vals, &c);
+            for i in 0..n {
+                let mut want = b[i];
+                want.mul_add_assign(&vals[i], &c);
+                assert!(same(&acc[i], &want), "mul_add {i}: {:?} {want:?}", acc[i]);
+            }
+        }
+        let mut out = vec![Dd::from_f64(0.0); n];
+        Real::mul_slice(&mut out, &vals, &b);
+        for i in 0..n {
+            assert!(same(&out[i], &(vals[i] * b[i])), "mul {i}");
+        }
+        Real::div_slice(&mut out, &vals, &b);
+        for i in 0..n {
+            assert!(same(&out[i], &(vals[i] / b[i])), "div {i}: {:?}", out[i]);
+        }
+        let finite = &vals[7..];
+        Real::div_slice(&mut out[7..], finite, &b[7..]);
+        for i in 7..n {
+            assert!(same(&out[i], &(vals[i] / b[i])), "div {i}: {:?}", out[i]);
+        }
+        let bf: Vec<Dd> = (0..finite.len())
+            .map(|i| finite[(i * 7 + 3) % finite.len()])
+            .collect();
+        let mut dot = Dd::from_f64(0.25);
+        dot.dot_add(finite, &bf);
+        let mut want = Dd::from_f64(0.25);
+        let mut size = 0.25;
+        for (x, y) in finite.iter().zip(&bf) {
+            want.mul_add_assign(x, y);
+            size += (x.hi * y.hi).abs();
+        }
+        assert!(((dot - want).hi.abs()) <= 64.0 * pow2(-106) * size);
+    }
 
     fn rel(a: Dd, b: &Float) -> f64 {
         let d = Float::with_val(256, a.to_mpfr(256) - b);

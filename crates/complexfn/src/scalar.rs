@@ -133,6 +133,40 @@ pub trait Real:
     fn mul_sub_assign(&mut self, a: &Self, b: &Self) {
         *self -= a.clone() * b;
     }
+    /// `acc[k] += b[k] c` for every k (the inner loop of a matrix product), with the
+    /// operations of [`Real::mul_add_assign`]; a backend may run the loop faster (double-double
+    /// does, with the same results).
+    #[inline]
+    fn mul_add_slice(acc: &mut [Self], b: &[Self], c: &Self) {
+        for (a, x) in acc.iter_mut().zip(b) {
+            a.mul_add_assign(x, c);
+        }
+    }
+    /// `self += Sum_i a_i b_i` (over the common length), with the operations of
+    /// [`Real::mul_add_assign`]; a backend may add the products in another order (double-double
+    /// sums them in interleaved partial sums, each addition as accurate as in order).
+    #[inline]
+    fn dot_add(&mut self, a: &[Self], b: &[Self]) {
+        for (x, y) in a.iter().zip(b) {
+            self.mul_add_assign(x, y);
+        }
+    }
+    /// `out[i] = a[i] b[i]` (over the common length); a backend may run the loop faster, with
+    /// the same results.
+    #[inline]
+    fn mul_slice(out: &mut [Self], a: &[Self], b: &[Self]) {
+        for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+            *o = x.clone() * y;
+        }
+    }
+    /// `out[i] = a[i]/b[i]` (over the common length); a backend may run the loop faster, with
+    /// the same results.
+    #[inline]
+    fn div_slice(out: &mut [Self], a: &[Self], b: &[Self]) {
+        for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
+            *o = x.clone() / y;
+        }
+    }
 
     /// `x` at the precision of `self`.
     #[inline]

@@ -83,9 +83,8 @@ pub fn least_squares<T: Real>(a: &Matrix<T>, b: &[T], rcond: f64) -> (Vec<T>, us
         let mut best = (k, zero.clone());
         for j in k..n {
             let mut s = zero.clone();
-            for x in &q.col(j)[k..] {
-                s.mul_add_assign(x, x);
-            }
+            let x = &q.col(j)[k..];
+            s.dot_add(x, x);
             if s > best.1 {
                 best = (j, s);
             }
@@ -123,22 +122,14 @@ pub fn least_squares<T: Real>(a: &Matrix<T>, b: &[T], rcond: f64) -> (Vec<T>, us
         for j in 0..(n - k - 1) {
             let c = &mut tail[j * m + k..(j + 1) * m];
             let mut dot = zero.clone();
-            for (vi, ci) in v.iter().zip(c.iter()) {
-                dot.mul_add_assign(vi, ci);
-            }
-            let f = dot / &tau;
-            for (vi, ci) in v.iter().zip(c.iter_mut()) {
-                ci.mul_sub_assign(vi, &f);
-            }
+            dot.dot_add(v, c);
+            let f = -(dot / &tau);
+            T::mul_add_slice(c, v, &f);
         }
         let mut dot = zero.clone();
-        for (vi, ri) in v.iter().zip(&rhs[k..]) {
-            dot.mul_add_assign(vi, ri);
-        }
-        let f = dot / &tau;
-        for (vi, ri) in v.iter().zip(rhs[k..].iter_mut()) {
-            ri.mul_sub_assign(vi, &f);
-        }
+        dot.dot_add(v, &rhs[k..]);
+        let f = -(dot / &tau);
+        T::mul_add_slice(&mut rhs[k..], v, &f);
         diag.push(r_kk);
     }
     // back substitution on the leading rank x rank block of R

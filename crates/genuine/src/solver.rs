@@ -52,7 +52,7 @@ use wedge::{Coupling, Indenter, Material};
 
 use crate::basis::{Basis, Family};
 use crate::error::{invalid, GenuineError, Result};
-use crate::kernels::{y_integral_checked, Lamb};
+use crate::kernels::{contour_integrand, y_integral_checked, CauchySums, Lamb};
 use crate::lsq::{least_squares, Matrix};
 use crate::quad::{integrate_vec, tanh_sinh_unit, tanh_sinh_unit_node, UnitNode};
 
@@ -295,6 +295,80 @@ impl ContourProbe {
     }
 }
 
+/// The row rule's abscissae, weights and doubled abscissae as slices (the operands of the
+/// rows' slice operations).
+struct RowColumns<T> {
+    v: Vec<T>,
+    w: Vec<T>,
+    v2: Vec<T>,
+}
+
+impl<T: Real> RowColumns<T> {
+    fn new(samples: &[Sample<T>]) -> Self {
+        RowColumns {
+            v: samples.iter().map(|s| s.v.clone()).collect(),
+            w: samples.iter().map(|s| s.w.clone()).collect(),
+            v2: samples.iter().map(|s| s.v.clone() * 2.0).collect(),
+        }
+    }
+}
+
+/// The collocation rows of the fine fit's basis by the grid index of their point (t = k h/4):
+/// a fit whose basis is a part of it (the same families, a lower degree) takes its rows at the
+/// points it shares from there (the row of a basis function does not depend on the others,
+/// so the columns taken are the ones it would compute). With the default options at 104 bits
+/// the plateau probe shares 111 of its 214 points with the fine fit, the degrees N/2 and 3N/4
+/// 54 of 86 and 86 of 126 with the two.
+struct RowCache<T> {
+    families: Vec<Family>,
+    degree: usize,
+    rows: std::collections::HashMap<i64, Vec<T>>,
+}
+
+impl<T: Real> RowCache<T> {
+    fn new(full: &Basis<T>) -> Self {
+        RowCache {
+            families: full.families().to_vec(),
+            degree: full.degree(),
+            rows: std::collections::HashMap::new(),
+        }
+    }
+
+    /// The row of `basis` at the point of index `k`, from `compute` unless held.
+    fn row(&mut self, basis: &Basis<T>, k: i64, compute: impl FnOnce() -> Vec<T>) -> Vec<T> {
+        if basis.families() != self.families.as_slice() || basis.degree() > self.degree {
+            return compute();
+        }
+        if basis.degree() == self.degree {
+            return self.rows.entry(k).or_insert_with(compute).clone();
+        }
+        match self.rows.get(&k) {
+            Some(full) => full
+                .chunks_exact(self.degree)
+                .flat_map(|f| f[..basis.degree()].iter().cloned())
+                .collect(),
+            None => compute(),
+        }
+    }
+}
+
+/// The contour functionals of [`Problem::contour_loads`]: the load's, the coarse level's, the
+/// differences' (in f64), and the y-rule's estimated absolute error.
+struct ContourLoads<T> {
+    fine: [T; 4],
+    coarse: Option<[T; 4]>,
+    diffs: Vec<[f64; 4]>,
+    err: f64,
+}
+
+/// The terms of the moment expansion of the Cauchy sums ([`crate::kernels::CauchySums`]) kept
+/// at `bits` for `samples` samples: as many as the bits (enough down to |z| = 1.43 max v, where
+/// r^M reaches 2^-bits at r = 1/2), but no more than an eighth of the samples (the expansion
+/// then costs under a fifth of the term-by-term sums).
+fn moment_terms(bits: u32, samples: usize) -> usize {
+    (bits as usize).min(samples / 8)
+}
+
 /// The solved genuine case, at the precision of the contact speed it was solved for (`f64` by
 /// default).
 #[derive(Clone, Debug)]
@@ -435,8 +509,8 @@ impl<T: Real> Problem<T> {
     }
 
     /// The collocation points: Chebyshev points of (0, p) moved to the nearest quarter point
-    /// of the t-grid of the row rule (never onto a node), as (x, p - x).
-    fn collocation_points(&self, count: usize, h: f64) -> Vec<(T, T)> {
+    /// of the t-grid of the row rule (never onto a node), as (k, x, p - x), t = k h/4.
+    fn collocation_points(&self, count: usize, h: f64) -> Vec<(i64, T, T)> {
         // positions in units of h/4
         let mut ks: Vec<i64> = (0..count)
             .map(|i| {
@@ -454,41 +528,64 @@ impl<T: Real> Problem<T> {
         ks.sort_unstable();
         ks.dedup();
         ks.into_iter()
-            .filter_map(|k| tanh_sinh_unit_node(&self.p, k, h / 4.0))
-            .map(|u: UnitNode<T>| (u.from_a * &self.p, u.to_b * &self.p))
+            .filter_map(|k| {
+                tanh_sinh_unit_node(&self.p, k, h / 4.0)
+                    .map(|u: UnitNode<T>| (k, u.from_a * &self.p, u.to_b * &self.p))
+            })
             .collect()
     }
 
     /// The collocation row of the singular integral equation at x in (0, p), from the sampled
     /// basis values `bv` (row-major, one row of `kk` values per sample).
-    fn sie_row(&self, basis: &Basis<T>, x: &T, pmx: &T, samples: &[Sample<T>], bv: &[T]) -> Vec<T> {
+    fn sie_row(
+        &self,
+        basis: &Basis<T>,
+        x: &T,
+        pmx: &T,
+        samples: &[Sample<T>],
+        cols: &RowColumns<T>,
+        bv: &[T],
+    ) -> Vec<T> {
         let kk = basis.len();
         let (p1, p2, l_s) = self.ray.cut_values(x);
         let a1 = p1.clone().recip();
         let a2 = self.gamma.clone() * &self.beta / &p2;
+        let a2x = a2.clone() / x;
         let c = self.ray.m2().clone() * l_s / (p1 * p2);
         let mut phi_x = vec![x.zero(); kk];
         basis.eval(x, pmx, &mut phi_x);
         let a12 = a1.clone() - &a2;
         let log_term = (pmx.clone() / x).ln();
         let pc = x.pi() * (self.beta.clone() + &self.gamma) * c;
-        // Sum_n w_n (f_n - f_x)/(v_n - x) = Sum_n c_n B_n - f_x Sum_n w_n/(v_n - x)
-        let mut row = vec![x.zero(); kk];
-        let mut wsum = x.zero();
-        for (s, b) in samples.iter().zip(bv.chunks_exact(kk)) {
-            let dv = if s.pv < s.v {
+        // Sum_n w_n (f_n - f_x)/(v_n - x) = Sum_n c_n B_n - f_x Sum_n w_n/(v_n - x), with
+        // c_n = w_n/(v_n - x) 2v_n/(v_n + x) (a1 - a2 v_n/x): one division per sample, the
+        // loops over the samples in the slice operations of the precision layer
+        let zero = x.zero();
+        let n = samples.len();
+        let mut dv = Vec::with_capacity(n);
+        let mut vpx = Vec::with_capacity(n);
+        for s in samples {
+            dv.push(if s.pv < s.v {
                 pmx.clone() - &s.pv
             } else {
                 s.v.clone() - x
-            };
-            let wd = s.w.clone() / &dv;
-            wsum += &wd;
-            // fac = 2v/(v + x) (a1 - a2 v/x)
-            let fac = s.v.clone() * 2.0 / (s.v.clone() + x) * (a1.clone() - a2.clone() * &s.v / x);
-            let cn = wd * &fac;
-            for (r, bk) in row.iter_mut().zip(b) {
-                r.mul_add_assign(bk, &cn);
-            }
+            });
+            vpx.push(s.v.clone() + x);
+        }
+        let mut t = vec![zero.clone(); n];
+        T::mul_slice(&mut t, &dv, &vpx);
+        // r = w/((v - x)(v + x)); Sum w/(v - x) = Sum r (v + x)
+        let mut r = dv;
+        T::div_slice(&mut r, &cols.w, &t);
+        let mut wsum = zero.clone();
+        wsum.dot_add(&r, &vpx);
+        let mut g = vec![a1.clone(); n];
+        T::mul_add_slice(&mut g, &cols.v, &-a2x);
+        T::mul_slice(&mut t, &r, &cols.v2);
+        T::mul_slice(&mut r, &t, &g);
+        let mut row = vec![zero; kk];
+        for (cn, b) in r.iter().zip(bv.chunks_exact(kk)) {
+            T::mul_add_slice(&mut row, b, cn);
         }
         let fx_coef = log_term - wsum;
         for (r, ph) in row.iter_mut().zip(&phi_x) {
@@ -500,112 +597,128 @@ impl<T: Real> Problem<T> {
     /// (U_y, U_x, U_y', U_x') at x0 > 0 of the load whose slope h = dS/dx, times the rule's
     /// weight, is `hw[i]` at the contour sample i; with the estimated absolute error.
     fn contour(&self, samples: &[Sample<T>], hw: &[T], x0: &T, tol: f64) -> ([T; 4], f64) {
-        let (mut u, err) = self.contour_many(samples, &[hw], 0, x0, tol);
-        (
-            u.pop()
-                .unwrap_or_else(|| std::array::from_fn(|_| x0.zero())),
-            err,
-        )
+        let out = self.contour_loads(samples, hw, None, &[], x0, tol);
+        (out.fine, out.err)
     }
 
-    /// [`Self::contour`] for several loads at once (one y-integral; the kernels and the
-    /// Cauchy factors 1/(v^2 - z^2) are shared).
-    fn contour_many(
+    /// [`Self::contour`] of the load `hw` together with (one y-integral, the kernels shared):
+    /// * with `coarse`, the same load on the samples marked there, times 2 (the rule of step
+    ///   2h of the level-doubling probe; its terms are the fine load's, summed apart);
+    /// * the loads `hw + diffs[j]/v`, given through their differences from `hw` in f64, times
+    ///   v (the product, not the factors, in f64: a slope times a weight next to the apex can
+    ///   lie beyond f64's range): those differences are what is wanted of them (the degrees'
+    ///   and the collocation sets' changes), and f64 carries them to 16 digits of themselves
+    ///   (`docs/contour-sums.md`).
+    ///
+    /// The y-rule's convergence is tested on the load `hw` alone.
+    fn contour_loads(
         &self,
         samples: &[Sample<T>],
-        hws: &[&[T]],
-        probes: usize,
+        hw: &[T],
+        coarse: Option<&[bool]>,
+        diffs: &[Vec<f64>],
         x0: &T,
         tol: f64,
-    ) -> (Vec<[T; 4]>, f64) {
-        let nc = hws.len();
-        // per sample: v^2 and, per load, 2 v h w and 2 v^2 h w
-        let v2: Vec<T> = samples.iter().map(|s| s.v.clone().sqr()).collect();
-        let ab: Vec<Vec<(T, T)>> = hws
-            .iter()
-            .map(|hw| {
-                samples
-                    .iter()
-                    .zip(hw.iter())
-                    .map(|(s, h)| {
-                        let a = s.v.clone() * h * 2.0;
-                        let b = a.clone() * &s.v;
-                        (a, b)
-                    })
-                    .collect()
-            })
-            .collect();
-        let zero = x0.zero();
-        // the last `probes` loads ride on the levels the others need (their difference from
-        // the first load is what is wanted, far above the y-rule's error)
-        let checked = 4 * (nc - probes.min(nc));
+    ) -> ContourLoads<T> {
+        let v: Vec<T> = samples.iter().map(|s| s.v.clone()).collect();
+        let (class, classes) = match coarse {
+            Some(c) => (c.iter().map(|&c| usize::from(c)).collect(), 2),
+            None => (vec![0; v.len()], 1),
+        };
+        let terms = moment_terms(self.prec, v.len());
+        let vhw: Vec<T> = v.iter().zip(hw).map(|(v, h)| v.clone() * h).collect();
+        let sums = CauchySums::new(&v, &class, classes, &[&vhw], terms, &self.p);
+        let v64: Vec<f64> = v.iter().map(|x| x.to_f64()).collect();
+        let d64: Vec<&[f64]> = diffs.iter().map(|d| d.as_slice()).collect();
+        let zeros = vec![0; v.len()];
+        let sums64 = CauchySums::new(&v64, &zeros, 1, &d64, moment_terms(53, v.len()), &0.0);
+        let lamb64 = Lamb::new(self.lamb.m().to_f64());
+        let gamma64 = self.gamma.to_f64();
+        let nd = diffs.len();
+        let x064 = x0.to_f64();
+        let y_scale = crate::kernels::y_scale(x0);
+        let (y_lo, y_hi) = (y_scale.clone() * 2f64.powi(-60), y_scale * 2f64.powi(60));
         let (vals, err) =
-            y_integral_checked(x0, 4 * nc, checked, tol, self.prec, |y, z, jac, out| {
-                let z2 = z.clone() * &z;
-                let (zr, zi) = (z2.re, z2.im);
-                let zi2 = zi.clone().sqr();
-                let one = zi.one();
-                // per load: Sum a q/|.|^2, Sum a/|.|^2, Sum b q/|.|^2, Sum b/|.|^2
-                let mut acc = vec![zero.clone(); 4 * nc];
-                // temporaries reused across the loop (no allocation per term in MPFR)
-                let (mut q, mut n, mut inv, mut t) =
-                    (zero.clone(), zero.clone(), zero.clone(), zero.clone());
-                for (i, v2i) in v2.iter().enumerate() {
-                    // 1/(v^2 - z^2) = (q + i Im z^2)/(q^2 + (Im z^2)^2), q = v^2 - Re z^2
-                    q.clone_from(v2i);
-                    q -= &zr;
-                    n.clone_from(&zi2);
-                    n.mul_add_assign(&q, &q);
-                    inv.clone_from(&one);
-                    inv /= &n;
-                    for (c, abc) in ab.iter().enumerate() {
-                        let (a, b) = &abc[i];
-                        let o = &mut acc[4 * c..4 * c + 4];
-                        t.clone_from(a);
-                        t *= &inv;
-                        o[0].mul_add_assign(&t, &q);
-                        o[1] += &t;
-                        t.clone_from(b);
-                        t *= &inv;
-                        o[2].mul_add_assign(&t, &q);
-                        o[3] += &t;
+            y_integral_checked(x0, 8 + 4 * nd, 4, tol, self.prec, |y, z, jac, out| {
+                let zinv = z.clone().recip();
+                let k = self.lamb.kernels(&zinv);
+                let a = sums.at(&z);
+                // class 0 (or all) and class 1 (the coarse level's nodes)
+                let mut all = contour_integrand(&k, &a[0], &zinv, &self.gamma, y, jac);
+                if classes == 2 {
+                    let c = contour_integrand(&k, &a[1], &zinv, &self.gamma, y, jac);
+                    for (j, (o, ci)) in all.iter_mut().zip(c).enumerate() {
+                        out[4 + j] = ci.clone() * 2.0;
+                        *o += &ci;
                     }
                 }
-                let zinv = z.recip();
-                let k = self.lamb.kernels(&zinv);
-                let ng = -self.gamma.clone();
-                for c in 0..nc {
-                    let o = &acc[4 * c..4 * c + 4];
-                    let fy = Cx::new(o[0].clone(), o[1].clone() * &zi);
-                    let fx = (Cx::new(o[2].clone(), o[3].clone() * &zi) * &zinv).scale(&ng);
-                    for j in 0..2 {
-                        let g = (k[j][0].clone() * &fy + k[j][1].clone() * &fx) * &zinv;
-                        out[4 * c + j] = g.im.clone() * y * jac;
-                        out[4 * c + 2 + j] = g.re * jac;
+                for (o, x) in out.iter_mut().zip(all) {
+                    *o = x;
+                }
+                // the differences on the nodes within 2^60 of the y-scale (tails below: the
+                // u-integrand is bounded, and the nodes beyond carry weights under 2^-60 of
+                // the rule's, far under f64's 2^-53, while f64 could not hold their y, jac)
+                let inside = *y > y_lo && *y < y_hi;
+                if nd > 0 && inside {
+                    let (y64, jac64) = (y.to_f64(), jac.to_f64());
+                    let z64 = Cx::new(x064, y64);
+                    let zinv64 = z64.clone().recip();
+                    let k64 = lamb64.kernels(&zinv64);
+                    for (j, s) in sums64.at(&z64).iter().enumerate() {
+                        let u = contour_integrand(&k64, s, &zinv64, &gamma64, &y64, &jac64);
+                        for (o, x) in out[8 + 4 * j..12 + 4 * j].iter_mut().zip(u) {
+                            *o = x0.lit(x);
+                        }
                     }
                 }
             });
-        let mut it = vals.into_iter();
-        let rows = (0..nc)
-            .map(|_| std::array::from_fn(|_| it.next().unwrap_or_else(|| x0.zero())))
-            .collect();
-        (rows, err)
+        let quad = |o: &[T]| -> [T; 4] { std::array::from_fn(|j| o[j].clone()) };
+        ContourLoads {
+            fine: quad(&vals[0..4]),
+            coarse: coarse.map(|_| quad(&vals[4..8])),
+            diffs: (0..nd)
+                .map(|j| std::array::from_fn(|i| vals[8 + 4 * j + i].to_f64()))
+                .collect(),
+            err,
+        }
     }
 
     /// The slope values h(v) w at the samples for coefficients `coef` of `basis`.
     fn weighted_slopes(&self, basis: &Basis<T>, samples: &[Sample<T>], coef: &[T]) -> Vec<T> {
-        let mut buf = vec![self.p.zero(); basis.len()];
-        samples
+        self.weighted_slopes_many(basis, samples, &[(basis, coef)])
+            .pop()
+            .unwrap_or_default()
+    }
+
+    /// [`Self::weighted_slopes`] for several coefficient sets, each of a basis that is a part of
+    /// `full` (the same families, at most its degree): the basis is filled once per sample at
+    /// the full degree, and each set sums its own columns (the values a fill at its degree
+    /// gives, the Chebyshev recurrence being the same).
+    fn weighted_slopes_many(
+        &self,
+        full: &Basis<T>,
+        samples: &[Sample<T>],
+        sets: &[(&Basis<T>, &[T])],
+    ) -> Vec<Vec<T>> {
+        let big = full.degree();
+        debug_assert!(sets
             .iter()
-            .map(|s| {
-                basis.fill(&s.fam, &s.t, &mut buf);
-                let mut acc = self.p.zero();
-                for (b, c) in buf.iter().zip(coef) {
-                    acc.mul_add_assign(b, c);
+            .all(|(b, _)| b.families() == full.families() && b.degree() <= big));
+        let zero = self.p.zero();
+        let mut buf = vec![zero.clone(); full.len()];
+        let mut out = vec![Vec::with_capacity(samples.len()); sets.len()];
+        for s in samples {
+            full.fill(&s.fam, &s.t, &mut buf);
+            for ((b, coef), o) in sets.iter().zip(out.iter_mut()) {
+                let n = b.degree();
+                let mut acc = zero.clone();
+                for (vals, c) in buf.chunks_exact(big).zip(coef.chunks_exact(n)) {
+                    acc.dot_add(&vals[..n], c);
                 }
-                acc * &s.w
-            })
-            .collect()
+                o.push(acc * &s.w);
+            }
+        }
+        out
     }
 
     /// The collocation least-squares solve: coefficients normalised by the force moment, and
@@ -615,6 +728,7 @@ impl<T: Real> Problem<T> {
         basis: &Basis<T>,
         rows: &[Sample<T>],
         opts: &SolveOptions,
+        cache: &mut RowCache<T>,
     ) -> Result<(Vec<T>, f64)> {
         let kk = basis.len();
         let like = &self.p;
@@ -622,6 +736,7 @@ impl<T: Real> Problem<T> {
         for (s, out) in rows.iter().zip(bv.chunks_exact_mut(kk)) {
             basis.fill(&s.fam, &s.t, out);
         }
+        let cols = RowColumns::new(rows);
         let pts =
             self.collocation_points(((kk as f64) * opts.oversample).ceil() as usize, opts.h_quad);
         let mpts = pts.len();
@@ -632,8 +747,8 @@ impl<T: Real> Problem<T> {
             });
         }
         let mut a = Matrix::zeros(mpts + 1, kk, like);
-        for (i, (x, pmx)) in pts.iter().enumerate() {
-            let row = self.sie_row(basis, x, pmx, rows, &bv);
+        for (i, (k, x, pmx)) in pts.iter().enumerate() {
+            let row = cache.row(basis, *k, || self.sie_row(basis, x, pmx, rows, &cols, &bv));
             let norm = row
                 .iter()
                 .fold(like.zero(), |m, v| m.max(v.clone().abs()))
@@ -646,9 +761,7 @@ impl<T: Real> Problem<T> {
         let mut nrow = vec![like.zero(); kk];
         for (s, b) in rows.iter().zip(bv.chunks_exact(kk)) {
             let wv = s.w.clone() * &s.v;
-            for (n, bk) in nrow.iter_mut().zip(b) {
-                n.mul_add_assign(bk, &wv);
-            }
+            T::mul_add_slice(&mut nrow, b, &wv);
         }
         let nn = nrow
             .iter()
@@ -755,46 +868,59 @@ impl<T: CachedRules> GenuineCase<T> {
         let rows = prob.row_samples(&basis, opts.h_quad);
         let xs = prob.p.clone() * NORMALISATION_POINT;
         let (cont, on_coarse) = prob.contour_samples(&basis, &xs, opts.h_tanh);
-        let (mut coef, residual) = prob.fit(&basis, &rows, &opts)?;
-        let mut fits = Vec::with_capacity(sizes.len());
-        for &n in &sizes {
-            let b = prob.basis(n, &opts);
-            let (c, r) = prob.fit(&b, &rows, &opts)?;
-            fits.push((b, c, r));
-        }
+        let mut cache = RowCache::new(&basis);
+        let (mut coef, residual) = prob.fit(&basis, &rows, &opts, &mut cache)?;
         // the plateau probe: degree N on another collocation set (above f64, next to the
-        // Rayleigh speed, and at every speed at double-double precision)
+        // Rayleigh speed, and at every speed at double-double precision); fitted before the
+        // coarser degrees, whose rows at its points it holds too
         let plateau = prob.prec > 64 && (near || prob.prec <= PLATEAU_EVERYWHERE_BITS);
-        if plateau {
+        let other_fit = if plateau {
             let other = SolveOptions {
                 oversample: opts.oversample * 1.25,
                 ..opts.clone()
             };
-            let (c, r) = prob.fit(&basis, &rows, &other)?;
-            fits.push((basis.clone(), c, r));
+            let (c, r) = prob.fit(&basis, &rows, &other, &mut cache)?;
+            Some((basis.clone(), c, r))
+        } else {
+            None
+        };
+        let mut fits = Vec::with_capacity(sizes.len() + 1);
+        for &n in &sizes {
+            let b = prob.basis(n, &opts);
+            let (c, r) = prob.fit(&b, &rows, &opts, &mut cache)?;
+            fits.push((b, c, r));
         }
-        let mut hws = vec![prob.weighted_slopes(&basis, &cont, &coef)];
-        for (b, c, _) in &fits {
-            hws.push(prob.weighted_slopes(b, &cont, c));
-        }
-        // the level-doubling probe of the v-rule: the fine load on the nodes of step 2h
-        let probe: Vec<T> = hws[0]
-            .iter()
-            .zip(&on_coarse)
-            .map(|(h, &c)| if c { h.clone() * 2.0 } else { h.zero() })
+        fits.extend(other_fit);
+        let mut sets = vec![(&basis, coef.as_slice())];
+        sets.extend(fits.iter().map(|(b, c, _)| (b, c.as_slice())));
+        let mut slopes = prob.weighted_slopes_many(&basis, &cont, &sets).into_iter();
+        let hw = slopes.next().unwrap_or_default();
+        // the other fits' loads through their differences from the fine one
+        let diffs: Vec<Vec<f64>> = slopes
+            .map(|other| {
+                other
+                    .into_iter()
+                    .zip(&hw)
+                    .zip(&cont)
+                    .map(|((x, f), s)| ((x - f) * &s.v).to_f64())
+                    .collect()
+            })
             .collect();
-        hws.push(probe);
-        let loads: Vec<&[T]> = hws.iter().map(|h| h.as_slice()).collect();
-        let (u, y_err) = prob.contour_many(&cont, &loads, 1, &xs, opts.contour_tol);
+        // the level-doubling probe of the v-rule: the fine load on the nodes of step 2h
+        let loads = prob.contour_loads(&cont, &hw, Some(&on_coarse), &diffs, &xs, opts.contour_tol);
         let no_value = || GenuineError::NoConvergence {
             what: "contour",
             detail: "no value".into(),
         };
-        let mut u = u.into_iter();
-        let (slope, v_hat) = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
+        let fine = loads.fine;
+        let with_diff = |d: &[f64; 4]| -> [T; 4] {
+            std::array::from_fn(|j| fine[j].clone() + prob.p.lit(d[j]))
+        };
+        let others: Vec<[T; 4]> = loads.diffs.iter().map(with_diff).collect();
+        let (slope, v_hat) = prob.normalise(&mut coef, fine.clone(), &xs)?;
         let mut coarser = Vec::with_capacity(fits.len());
-        for (basis, mut coef, residual) in fits {
-            let (_, v_hat) = prob.normalise(&mut coef, u.next().ok_or_else(no_value)?, &xs)?;
+        for ((basis, mut coef, residual), u) in fits.into_iter().zip(others) {
+            let (_, v_hat) = prob.normalise(&mut coef, u, &xs)?;
             coarser.push(Fit {
                 basis,
                 coef,
@@ -810,8 +936,9 @@ impl<T: CachedRules> GenuineCase<T> {
         } else {
             None
         };
-        let (slope_2h, v_hat_2h) = prob.slope_and_v_hat(u.next().ok_or_else(no_value)?, &xs)?;
-        let contour = ContourProbe::new(&slope, &v_hat, &slope_2h, &v_hat_2h, y_err, &prob.beta);
+        let (slope_2h, v_hat_2h) = prob.slope_and_v_hat(loads.coarse.ok_or_else(no_value)?, &xs)?;
+        let contour =
+            ContourProbe::new(&slope, &v_hat, &slope_2h, &v_hat_2h, loads.err, &prob.beta);
         Ok(GenuineCase {
             prob,
             fit: Fit {
