@@ -2,6 +2,8 @@
 //! rigid cylinder, m0/(rho R^2) = 10, V0/c1 = 0.01, c2/c1 = 1000/1870.83, to c1 t/R = 10) on one
 //! grid at dx = R/50 and R/100, and with three grids (the error estimates) at R/100 and R/200; the same
 //! case with a thin-shell striker of equal mass (h_s/R = 0.05, steel) on one grid at R/100.
+//! The reference case in double-double (`ImpactCase::solve_at`, `impact run --digits`) on one
+//! grid at R/50 and with three grids at R/50, beside its f64 rows.
 //! The cost against N_t and N_x with fitted exponents: `cargo run --release -p impact
 //! --example cost_scaling`.
 //!
@@ -9,6 +11,7 @@
 
 use std::hint::black_box;
 
+use complexfn::Dd;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use impact::{Drive, EdgeLaw, ImpactCase, ShellStriker, Striker, StrikerMaterial};
 
@@ -57,6 +60,17 @@ fn bench(c: &mut Criterion) {
         &case,
         |b, case| b.iter(|| black_box(case.solve(|_| {}).unwrap())),
     );
+    for levels in [1, 3] {
+        let case = reference(0.02, levels, 10.0);
+        g.bench_with_input(
+            BenchmarkId::new(
+                "rigid_reference_double_double",
+                format!("R_over_dx=50, levels={levels}"),
+            ),
+            &case,
+            |b, case| b.iter(|| black_box(case.solve_at::<Dd>(|_| {}).unwrap())),
+        );
+    }
     g.finish();
 }
 
