@@ -3,7 +3,8 @@
 //!
 //! For an m x n matrix A (m >= n) the columns are reflected one at a time, the next pivot
 //! being the remaining column of largest norm (recomputed from the untransformed rows at each
-//! step, so the pivoting does not suffer from norm downdating). Columns whose pivot falls below
+//! step, so the pivoting does not suffer from norm downdating; above f64 from the entries' f64
+//! parts, the chosen column's norm at full precision). Columns whose pivot falls below
 //! `rcond` times the first are treated as dependent and get a zero coefficient (the basic
 //! solution), which is what a truncated SVD does for the residual, at a fraction of the cost.
 
@@ -78,18 +79,39 @@ pub fn least_squares<T: Real>(a: &Matrix<T>, b: &[T], rcond: f64) -> (Vec<T>, us
     let zero = b[0].zero();
     let mut first = zero.clone();
     let mut rank = n;
+    // above f64 the pivot is chosen by the norms of the columns' leading f64 parts (the
+    // choice differs from the exact one only where two norms agree to f64's rounding, and
+    // either is as good a pivot); the pivot's norm itself is summed at full precision
+    let approx = zero.prec() > 53;
     for k in 0..n {
         // pivot: the remaining column of largest norm over rows k..m
-        let mut best = (k, zero.clone());
-        for j in k..n {
-            let mut s = zero.clone();
-            let x = &q.col(j)[k..];
-            s.dot_add(x, x);
-            if s > best.1 {
-                best = (j, s);
+        let (pj, norm2) = if approx {
+            let mut best = (k, 0.0_f64);
+            for j in k..n {
+                let s = q.col(j)[k..].iter().fold(0.0_f64, |s, x| {
+                    let x = x.to_f64();
+                    s + x * x
+                });
+                if s > best.1 {
+                    best = (j, s);
+                }
             }
-        }
-        let (pj, norm2) = best;
+            let mut norm2 = zero.clone();
+            let x = &q.col(best.0)[k..];
+            norm2.dot_add(x, x);
+            (best.0, norm2)
+        } else {
+            let mut best = (k, zero.clone());
+            for j in k..n {
+                let mut s = zero.clone();
+                let x = &q.col(j)[k..];
+                s.dot_add(x, x);
+                if s > best.1 {
+                    best = (j, s);
+                }
+            }
+            best
+        };
         if pj != k {
             for i in 0..m {
                 q.data.swap(k * m + i, pj * m + i);
