@@ -6,8 +6,8 @@ use clap::Args;
 use complexfn::{Dd, Real};
 use impact::scalar::Scalar;
 use impact::{
-    Drive, EdgeLaw, ImpactCase, Profile, ShellStriker, Solution, Striker, StrikerMaterial,
-    Value as Est,
+    Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, ShellStriker, Solution, Striker,
+    StrikerMaterial, Value as Est,
 };
 use serde_json::{json, Map, Value};
 
@@ -412,13 +412,14 @@ impl Digits {
     }
 }
 
-/// The report as JSON (the values to `digits` significant digits, or as f64).
+/// The report as JSON (the values to `digits` significant digits, or as f64) and the history
+/// rows it was made from.
 fn report<T: Scalar>(
     a: &RunArgs,
     sol: &Solution<T>,
     version: &str,
     digits: Option<usize>,
-) -> R<Value> {
+) -> R<(Value, Vec<HistoryRow<T>>)> {
     let dg = Digits(digits);
     let est = |v: &Est<T>| dg.est(v);
     let (rows, orders) = sol.history();
@@ -558,7 +559,7 @@ fn report<T: Scalar>(
         }
         out.insert("pressure".into(), Value::Array(list));
     }
-    Ok(Value::Object(out))
+    Ok((Value::Object(out), rows))
 }
 
 /// CSV with `#` headers: one row per reported time, then the pressure profiles.
@@ -650,13 +651,13 @@ pub fn run(a: &RunArgs, version: &str) -> R<Value> {
     let v = match a.digits {
         None => {
             let sol = c.solve(progress).map_err(|e| e.to_string())?;
-            let mut v = report(a, &sol, version, None)?;
-            shell_energy_columns(&sol, &mut v)?;
+            let (mut v, rows) = report(a, &sol, version, None)?;
+            shell_energy_columns(&sol, &rows, &mut v)?;
             v
         }
         Some(d) if (1..=MAX_DIGITS).contains(&d) => {
             let sol = c.solve_at::<Dd>(progress).map_err(|e| e.to_string())?;
-            report(a, &sol, version, Some(d as usize))?
+            report(a, &sol, version, Some(d as usize))?.0
         }
         Some(d) => {
             return Err(format!(
@@ -670,9 +671,8 @@ pub fn run(a: &RunArgs, version: &str) -> R<Value> {
 
 /// The shell striker's strain and vibration energies with their estimates, added to the
 /// report's columns (f64: the shell runs in f64 only).
-fn shell_energy_columns(sol: &Solution, v: &mut Value) -> R<()> {
-    let (rows, _) = sol.history();
-    let Some(parts) = sol.shell_energy_history(&rows) else {
+fn shell_energy_columns(sol: &Solution, rows: &[HistoryRow], v: &mut Value) -> R<()> {
+    let Some(parts) = sol.shell_energy_history(rows) else {
         return Ok(());
     };
     let parts = parts.map_err(|e| e.to_string())?;

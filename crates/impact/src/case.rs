@@ -327,15 +327,14 @@ impl ImpactCase {
         let total: f64 = (0..self.levels).map(|l| 0.25f64.powi(l as i32)).sum();
         let mut done = 0.0;
         for level in (0..self.levels).rev() {
-            let mut dx = self.dx * (1 << level) as f64;
             // the cell width at the march's precision (the input dx times 2^level)
             let mut grid_dx = T::input(self.dx) * (1u64 << level) as f64;
             if let Profile::Flat { half_width } = self.profile {
                 // cells 0..=N exactly cover [0, a]
-                let cells = (half_width / dx - 0.5).round().max(1.0);
-                dx = half_width / (cells + 0.5);
+                let cells = (half_width / grid_dx.to_f64() - 0.5).round().max(1.0);
                 grid_dx = T::input(half_width) / (cells + 0.5);
             }
+            let dx = grid_dx.to_f64();
             let mut own = match self.striker {
                 Striker::Shell(_) => self.striker.compliance(m64, dx, self.kappa)?,
                 _ => None,
