@@ -318,7 +318,9 @@ impl<T: Real> RowColumns<T> {
 /// points it shares from there (the row of a basis function does not depend on the others,
 /// so the columns taken are the ones it would compute). With the default options at 104 bits
 /// the plateau probe shares 111 of its 214 points with the fine fit, the degrees N/2 and 3N/4
-/// 54 of 86 and 86 of 126 with the two.
+/// 54 of 86 and 86 of 126 with the two. The rows are computed once, for the union of the
+/// fine fit's and the plateau probe's points, in parallel (each row is a function of its point
+/// alone, so the numbers do not depend on the threads); the fits then only read them.
 struct RowCache<T> {
     families: Vec<Family>,
     degree: usize,
@@ -326,23 +328,30 @@ struct RowCache<T> {
 }
 
 impl<T: Real> RowCache<T> {
-    fn new(full: &Basis<T>) -> Self {
+    /// The rows of `full` at `points`, computed by `compute` on the available threads.
+    fn new(
+        full: &Basis<T>,
+        points: &[(i64, T, T)],
+        compute: impl Fn(&T, &T) -> Vec<T> + Sync,
+    ) -> Self {
+        use rayon::prelude::*;
         RowCache {
             families: full.families().to_vec(),
             degree: full.degree(),
-            rows: std::collections::HashMap::new(),
+            rows: points
+                .par_iter()
+                .map(|(k, x, pmx)| (*k, compute(x, pmx)))
+                .collect(),
         }
     }
 
     /// The row of `basis` at the point of index `k`, from `compute` unless held.
-    fn row(&mut self, basis: &Basis<T>, k: i64, compute: impl FnOnce() -> Vec<T>) -> Vec<T> {
+    fn row(&self, basis: &Basis<T>, k: i64, compute: impl FnOnce() -> Vec<T>) -> Vec<T> {
         if basis.families() != self.families.as_slice() || basis.degree() > self.degree {
             return compute();
         }
-        if basis.degree() == self.degree {
-            return self.rows.entry(k).or_insert_with(compute).clone();
-        }
         match self.rows.get(&k) {
+            Some(full) if basis.degree() == self.degree => full.clone(),
             Some(full) => full
                 .chunks_exact(self.degree)
                 .flat_map(|f| f[..basis.degree()].iter().cloned())
@@ -721,24 +730,36 @@ impl<T: Real> Problem<T> {
         out
     }
 
-    /// The collocation least-squares solve: coefficients normalised by the force moment, and
-    /// the max residual of the scaled rows.
+    /// The values of `basis` at the row samples, one row of `basis.len()` values per sample.
+    fn basis_values(&self, basis: &Basis<T>, rows: &[Sample<T>]) -> Vec<T> {
+        let kk = basis.len();
+        let mut bv = vec![self.p.zero(); rows.len() * kk];
+        for (s, out) in rows.iter().zip(bv.chunks_exact_mut(kk)) {
+            basis.fill(&s.fam, &s.t, out);
+        }
+        bv
+    }
+
+    /// The collocation points of a fit of `basis` with the options `opts`.
+    fn fit_points(&self, basis: &Basis<T>, opts: &SolveOptions) -> Vec<(i64, T, T)> {
+        let count = ((basis.len() as f64) * opts.oversample).ceil() as usize;
+        self.collocation_points(count, opts.h_quad)
+    }
+
+    /// The collocation least-squares solve of `basis` (its values at the row samples `bv`):
+    /// coefficients normalised by the force moment, and the max residual of the scaled rows.
     fn fit(
         &self,
         basis: &Basis<T>,
         rows: &[Sample<T>],
+        bv: &[T],
+        cols: &RowColumns<T>,
         opts: &SolveOptions,
-        cache: &mut RowCache<T>,
+        cache: &RowCache<T>,
     ) -> Result<(Vec<T>, f64)> {
         let kk = basis.len();
         let like = &self.p;
-        let mut bv = vec![like.zero(); rows.len() * kk];
-        for (s, out) in rows.iter().zip(bv.chunks_exact_mut(kk)) {
-            basis.fill(&s.fam, &s.t, out);
-        }
-        let cols = RowColumns::new(rows);
-        let pts =
-            self.collocation_points(((kk as f64) * opts.oversample).ceil() as usize, opts.h_quad);
+        let pts = self.fit_points(basis, opts);
         let mpts = pts.len();
         if mpts < kk {
             return Err(GenuineError::NoConvergence {
@@ -748,7 +769,7 @@ impl<T: Real> Problem<T> {
         }
         let mut a = Matrix::zeros(mpts + 1, kk, like);
         for (i, (k, x, pmx)) in pts.iter().enumerate() {
-            let row = cache.row(basis, *k, || self.sie_row(basis, x, pmx, rows, &cols, &bv));
+            let row = cache.row(basis, *k, || self.sie_row(basis, x, pmx, rows, cols, bv));
             let norm = row
                 .iter()
                 .fold(like.zero(), |m, v| m.max(v.clone().abs()))
@@ -868,29 +889,55 @@ impl<T: CachedRules> GenuineCase<T> {
         let rows = prob.row_samples(&basis, opts.h_quad);
         let xs = prob.p.clone() * NORMALISATION_POINT;
         let (cont, on_coarse) = prob.contour_samples(&basis, &xs, opts.h_tanh);
-        let mut cache = RowCache::new(&basis);
-        let (mut coef, residual) = prob.fit(&basis, &rows, &opts, &mut cache)?;
         // the plateau probe: degree N on another collocation set (above f64, next to the
-        // Rayleigh speed, and at every speed at double-double precision); fitted before the
-        // coarser degrees, whose rows at its points it holds too
+        // Rayleigh speed, and at every speed at double-double precision)
         let plateau = prob.prec > 64 && (near || prob.prec <= PLATEAU_EVERYWHERE_BITS);
-        let other_fit = if plateau {
-            let other = SolveOptions {
-                oversample: opts.oversample * 1.25,
-                ..opts.clone()
-            };
-            let (c, r) = prob.fit(&basis, &rows, &other, &mut cache)?;
-            Some((basis.clone(), c, r))
-        } else {
-            None
+        let other = SolveOptions {
+            oversample: opts.oversample * 1.25,
+            ..opts.clone()
         };
-        let mut fits = Vec::with_capacity(sizes.len() + 1);
-        for &n in &sizes {
-            let b = prob.basis(n, &opts);
-            let (c, r) = prob.fit(&b, &rows, &opts, &mut cache)?;
-            fits.push((b, c, r));
+        let bv = prob.basis_values(&basis, &rows);
+        let cols = RowColumns::new(&rows);
+        // the fine basis's rows at the fine fit's and the plateau probe's points, computed
+        // once on the available threads; the coarser degrees take theirs from there too
+        let mut points = prob.fit_points(&basis, &opts);
+        if plateau {
+            points.extend(prob.fit_points(&basis, &other));
+            points.sort_unstable_by_key(|q| q.0);
+            points.dedup_by_key(|q| q.0);
         }
-        fits.extend(other_fit);
+        let cache = RowCache::new(&basis, &points, |x, pmx| {
+            prob.sie_row(&basis, x, pmx, &rows, &cols, &bv)
+        });
+        // the fits are independent given the rows: the fine one, the coarser degrees and the
+        // plateau probe's, solved in parallel (the same numbers as one after the other)
+        let mut jobs: Vec<(Basis<T>, &SolveOptions)> = sizes
+            .iter()
+            .map(|&n| (prob.basis(n, &opts), &opts))
+            .collect();
+        if plateau {
+            jobs.push((basis.clone(), &other));
+        }
+        let fine_job = || prob.fit(&basis, &rows, &bv, &cols, &opts, &cache);
+        let other_jobs = || {
+            use rayon::prelude::*;
+            jobs.into_par_iter()
+                .map(|(b, o)| {
+                    let own;
+                    let values = if b.len() == basis.len() {
+                        &bv
+                    } else {
+                        own = prob.basis_values(&b, &rows);
+                        &own
+                    };
+                    let (c, r) = prob.fit(&b, &rows, values, &cols, o, &cache)?;
+                    Ok((b, c, r))
+                })
+                .collect::<Result<Vec<_>>>()
+        };
+        let (fine_fit, fits) = rayon::join(fine_job, other_jobs);
+        let (mut coef, residual) = fine_fit?;
+        let fits = fits?;
         let mut sets = vec![(&basis, coef.as_slice())];
         sets.extend(fits.iter().map(|(b, c, _)| (b, c.as_slice())));
         let mut slopes = prob.weighted_slopes_many(&basis, &cont, &sets).into_iter();
