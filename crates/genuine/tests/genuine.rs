@@ -227,3 +227,43 @@ fn normal_gap_outside_the_contact_matches_the_paper_and_is_open() {
         "x inside the contact is refused"
     );
 }
+
+/// The rows and the fits run on rayon's threads: the numbers must not depend on how many
+/// (every sum keeps its order). One thread against the default pool, at double-double, where
+/// the plateau probe's fit runs as well: V_hat, the force and the estimate to the bit.
+#[test]
+fn the_solve_is_the_same_on_one_thread_and_on_many() {
+    use complexfn::{Dd, Real};
+    // Dd compares both of its parts
+    let mat = Material::paper();
+    let ind = Indenter::new(89.0, 0.6, Coupling::On).unwrap();
+    let p = Dd::from_f64(0.3);
+    let opts = SolveOptions::for_precision(p.prec());
+    let run = || {
+        let g = GenuineCase::solve(&mat, &ind, p, opts.clone()).unwrap();
+        (g.v_hat(), g.force_hat_with_error().0, g.error_estimate())
+    };
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap()
+        .install(run);
+    let many = rayon::ThreadPoolBuilder::new()
+        .num_threads(4)
+        .build()
+        .unwrap()
+        .install(run);
+    assert!(
+        one.0 == many.0,
+        "V_hat {} against {}",
+        one.0.to_decimal(34),
+        many.0.to_decimal(34)
+    );
+    assert!(
+        one.1 == many.1,
+        "force {} against {}",
+        one.1.to_decimal(34),
+        many.1.to_decimal(34)
+    );
+    assert_eq!(one.2.to_bits(), many.2.to_bits());
+}
