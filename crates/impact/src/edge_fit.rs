@@ -18,6 +18,7 @@ use lamb::HalfPlane;
 use crate::case::{Run, Solution};
 use crate::error::{invalid, ImpactError, Result};
 use crate::linalg::Lu;
+use crate::march::EdgeLaw;
 
 /// The fit's upper end in s = d/b for a driven wedge (its pressure has a logarithmic peak at
 /// the apex, s = 1).
@@ -58,7 +59,9 @@ pub struct ExponentFit {
 /// prediction of `lamb::edge` for the edge's speed over the last 30 percent of the run
 /// (`docs/impact.md`, section 8). The fit takes two decades of s = d/b up to s = 0.5, or up
 /// to 80 percent of the way to the nearest wave front from the first contact (s = 1 - c/D,
-/// c the fastest of c1, c2, c_R below D) when that is nearer; the cells next to the edge are
+/// c the fastest of c1, c2, c_R below D) when that is nearer, except the Rayleigh point behind
+/// a free edge between c_R and c2, where the solution is smooth (its edge term is the one that
+/// keeps the face free of a kink there, `docs/edge.md`, section 5); the cells next to the edge are
 /// left out (at least four, and the cells the edge crosses in two steps). Errors: a run too
 /// short or too coarse for the fit, an edge speed at a range boundary, a failed fit.
 pub fn fit_self_similar_edge(sol: &Solution) -> Result<EdgeExponentCheck> {
@@ -79,6 +82,7 @@ pub fn fit_self_similar_edge(sol: &Solution) -> Result<EdgeExponentCheck> {
     let behaviour = HalfPlane::new(sol.m)?.edge_behaviour(speed, sol.case.law)?;
     let front = match behaviour.range {
         SpeedRange::SubRayleigh => None,
+        SpeedRange::RayleighShear if sol.case.law == EdgeLaw::Signorini => None,
         SpeedRange::RayleighShear => Some(sol.s_r),
         SpeedRange::Transonic => Some(sol.m),
         SpeedRange::Supersonic => Some(1.0),
