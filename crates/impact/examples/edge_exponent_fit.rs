@@ -6,8 +6,8 @@
 //! (nu = 0.25) is self-similar: with the `kinematic` law its edge moves at D = V tan(Theta),
 //! chosen in each speed range (between c_R and c1 the kinematic problem has no solution,
 //! `docs/edge.md`, section 5); with the `signorini` law at the free edge's own speed, driven at
-//! V = 0.3, 0.523, 0.9 and 0.958 s c1 (s the face slope: sub-Rayleigh, Rayleigh-shear and two
-//! transonic edges). The
+//! V = 0.3, 0.523, 0.9, 0.958 and 0.54637 s c1 (s the face slope: sub-Rayleigh, Rayleigh-shear
+//! at 0.555 c1, two transonic edges, Rayleigh-shear at 0.572 c1). The
 //! pressures of the last 30 percent of the steps, in the edge's scale s = d/b, are fitted by
 //! s^lambda (c_0 + c_1 s + c_2 s^2 + c_3 s^3) over two decades of s
 //! (`impact::edge_fit::fit_self_similar_edge`; b = R at the end).
@@ -37,6 +37,7 @@ fn main() {
         (EdgeLaw::Signorini, 0.523),
         (EdgeLaw::Signorini, 0.9),
         (EdgeLaw::Signorini, 0.958),
+        (EdgeLaw::Signorini, 0.5463666),
     ];
     println!(
         "law        D/c1    range            predicted  fitted     error     decades  seconds"

@@ -2,8 +2,10 @@
 //! `docs/edge.md`) against the transient solver: a rigid wedge driven at constant speed is
 //! self-similar, and its pressures near the edge, fitted over two decades of the distance
 //! from the edge by s^lambda times a cubic (`impact::edge_fit`), give the predicted exponent to
-//! 1e-2 (`docs/impact.md`, section 8, which also records the two ranges where the march does
-//! not converge near the edge).
+//! 1e-2 (`docs/impact.md`, section 8): the prescribed edge below c_R and above c1, the free
+//! edge below c_R, between c_R and c2 and in the transonic range. Between c_R and c1 the
+//! prescribed edge has no solution (`docs/edge.md`, section 5), and the free edge there is
+//! also checked against the self-similar solution in closed form.
 
 use impact::edge_fit::fit_self_similar_edge;
 use impact::{Drive, EdgeLaw, ImpactCase, Profile};
@@ -60,6 +62,28 @@ fn supersonic_edge_has_a_finite_jump() {
     assert!(
         check.fit.lambda.abs() < 1e-2,
         "fitted {} against 0",
+        check.fit.lambda
+    );
+}
+
+/// The free (Signorini) edge between c_R and c2: driven at V = 0.54637 s c1 (s the face slope)
+/// the edge runs at its own 0.572 c1 (`tests/reference/selfsimilar_wedge.py`), where the free
+/// edge is square-root singular and compressive (`docs/edge.md`, section 5; the kinematic law
+/// has no solution there). The fit runs through the Rayleigh point, where the free edge's
+/// solution is smooth; on 1600 cells.
+#[test]
+fn free_rayleigh_shear_edge_has_the_square_root_exponent() {
+    let v = 0.546_366_6 / THETA.to_radians().tan();
+    let sol = driven_wedge(v, EdgeLaw::Signorini, 1.0 / 0.572, 1.0 / 1600.0);
+    let check = fit_self_similar_edge(&sol).unwrap();
+    assert_eq!(check.behaviour.range, SpeedRange::RayleighShear);
+    assert!((check.behaviour.speed_over_c1 / 0.572 - 1.0).abs() < 2e-3);
+    assert_eq!(check.behaviour.selected, -0.5);
+    let (lo, hi) = check.fit.s_range;
+    assert!((hi / lo).log10() > 1.9, "decades fitted: {lo} .. {hi}");
+    assert!(
+        (check.fit.lambda + 0.5).abs() < 1e-2,
+        "fitted {} against -1/2",
         check.fit.lambda
     );
 }
