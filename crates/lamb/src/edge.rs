@@ -16,6 +16,11 @@
 //! G = Im(S+)/((lambda + 1) sin(pi lambda)); a free edge under the Signorini conditions
 //! (c > 0, gap >= 0) admits exactly the exponent with G > 0, a prescribed edge (the paper's
 //! eq (4)) the lower one.
+//!
+//! These are local laws. Whether a whole contact with such an edge exists is a global
+//! question: between c_R and c1 the Rayleigh points lie inside the contact, and a prescribed
+//! edge moving steadily there has no solution (the self-similar wedge, `docs/edge.md`,
+//! section 5), while a free edge does.
 
 use complexfn::{Cx, Real};
 
