@@ -540,6 +540,23 @@ fn report<T: Scalar>(
             None => Value::Null,
         },
     );
+    // where a prescribed edge ran between c_R and c1 (no solution there, docs/edge.md
+    // section 5): the intervals, always present ([] when none)
+    out.insert(
+        "edge_without_solution".into(),
+        Value::Array(
+            sol.edge_without_solution()
+                .into_iter()
+                .map(|(from, to)| {
+                    json!({
+                        "from_c1t_over_R": dg.of(from),
+                        "to_c1t_over_R": dg.of(to),
+                        "reason": "the prescribed (kinematic) edge ran between c_R and c1, where a steadily moving prescribed edge has no solution (docs/edge.md, section 5); the pressure near the edge does not converge there"
+                    })
+                })
+                .collect(),
+        ),
+    );
     if let Some(spec) = &a.pressure_at {
         let mut list = Vec::new();
         for t in time_list(spec, "--pressure-at")? {
@@ -582,6 +599,16 @@ pub fn csv(v: &Value, cmdline: &str) -> String {
         v["grid"]
     ));
     s.push_str("# dimensionless: x/R, c1 t/R, h/R, speeds over c1 (hdot over V0 for a free striker), force over rho c1^2 R, energies over rho c1^2 R^2; err_* are absolute error estimates\n");
+    if let Some(list) = v["edge_without_solution"].as_array() {
+        for e in list {
+            s.push_str(&format!(
+                "# edge without solution: c1 t/R from {} to {}: {}\n",
+                e["from_c1t_over_R"],
+                e["to_c1t_over_R"],
+                e["reason"].as_str().unwrap_or("")
+            ));
+        }
+    }
     let keys: Vec<&str> = [
         "c1t_over_R",
         "h_over_R",

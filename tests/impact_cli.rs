@@ -277,6 +277,59 @@ fn run_driven_flat_punch_gives_the_plane_wave_pressure() {
     assert!(num(&e[0]) < 1e-10, "{}", e[0]);
 }
 
+/// A wedge driven so that its prescribed edge runs at 0.555 c1 (between c_R and c2, where a
+/// steadily moving prescribed edge has no solution, `docs/edge.md`, section 5) is reported as
+/// such over its whole run, in the JSON and in the CSV's header; the same wedge under
+/// Signorini's law has a solution (its free edge runs ahead of the geometric one) and reports
+/// none; an edge below c_R reports none.
+#[test]
+fn run_reports_where_a_prescribed_edge_has_no_solution() {
+    let wedge = |d: f64, law: &str, csv: bool| {
+        let v = format!("speed:V_over_c1={}", d / 80f64.to_radians().tan());
+        let mut args = vec![
+            "run",
+            "--poisson",
+            "0.25",
+            "--profile",
+            "wedge:theta_deg=80",
+            "--length",
+            "1",
+            "--driven",
+            &v,
+            "--law",
+            law,
+            "--end",
+            "c1t/R=0.5",
+            "--dx",
+            "0.02",
+            "--levels",
+            "1",
+        ];
+        if !csv {
+            args.push("--json");
+        }
+        let (code, out, err) = impact(&args);
+        assert_eq!(code, 0, "{err}");
+        out
+    };
+    let v: Value = serde_json::from_str(&wedge(0.555, "kinematic", false)).unwrap();
+    let list = v["edge_without_solution"].as_array().unwrap();
+    assert_eq!(list.len(), 1, "{list:?}");
+    let last = num(v["c1t_over_R"].as_array().unwrap().last().unwrap());
+    assert!(num(&list[0]["from_c1t_over_R"]) <= 0.1);
+    assert!((num(&list[0]["to_c1t_over_R"]) - last).abs() < 1e-12);
+    assert!(list[0]["reason"].as_str().unwrap().contains("no solution"));
+    assert!(wedge(0.555, "kinematic", true).contains("# edge without solution: c1 t/R from"));
+    for (d, law) in [(0.555, "signorini"), (0.3, "kinematic")] {
+        let v: Value = serde_json::from_str(&wedge(d, law, false)).unwrap();
+        assert_eq!(
+            v["edge_without_solution"],
+            serde_json::json!([]),
+            "{law} at {d}"
+        );
+    }
+}
+
 #[test]
 fn run_refuses_bad_input_with_one_line() {
     let cases: Vec<(Vec<&str>, &str)> = vec![

@@ -1028,6 +1028,52 @@ impl Solution<f64> {
 }
 
 impl<T: Scalar> Solution<T> {
+    /// The intervals of c1 t/R over which a prescribed (kinematic) edge advanced faster than
+    /// the Rayleigh wave and slower than c1, on the finest grid (the edge's speed over the last
+    /// four steps, as the march takes it); empty under Signorini's law. A prescribed edge
+    /// moving steadily at such speeds has no solution (`docs/edge.md`, section 5: the Rayleigh
+    /// points inside the contact ask a second condition of the edge's one free amplitude), and
+    /// the march's pressure near the edge does not converge there (`docs/impact.md`, section
+    /// 8); the free edge has a solution at every speed.
+    pub fn edge_without_solution(&self) -> Vec<(T, T)> {
+        let mut out: Vec<(T, T)> = Vec::new();
+        if self.case.law != EdgeLaw::Kinematic {
+            return out;
+        }
+        let Some(run) = self.runs.first() else {
+            return out;
+        };
+        let steps = &run.steps;
+        let mut open: Option<T> = None;
+        for n in 0..steps.len() {
+            let q = n.min(4);
+            let (t, b) = (steps[n].t, steps[n].b);
+            let (t0, b0) = if n >= q && q > 0 {
+                (steps[n - q].t, steps[n - q].b)
+            } else {
+                (T::of(0.0), T::of(0.0))
+            };
+            let speed = if t > t0 {
+                (b - b0) / (t - t0)
+            } else {
+                T::of(0.0)
+            };
+            let inside = speed > self.s_r && speed < 1.0;
+            match (inside, open) {
+                (true, None) => open = Some(t),
+                (false, Some(from)) => {
+                    out.push((from, steps[n - 1].t));
+                    open = None;
+                }
+                _ => {}
+            }
+        }
+        if let (Some(from), Some(last)) = (open, steps.last()) {
+            out.push((from, last.t));
+        }
+        out
+    }
+
     /// Peak force over rho c1^2 R and its time, on the finest grid.
     pub fn peak_force(&self) -> Option<(T, T)> {
         let m2 = self.m * self.m;
