@@ -102,27 +102,33 @@ fn two_prod(a: f64, b: f64) -> (f64, f64) {
 
 // ---- a loop of products added ----------------------------------------------------------
 
+/// Calls `$body::<true>` compiled for AVX2 and FMA where the processor has them (detected at
+/// run time, so the build needs no target flag), `$body::<false>` otherwise: the one dispatch
+/// of the slice loops below, with the arguments and the result of `$body`.
+macro_rules! with_fma {
+    ($body:ident($($arg:ident: $ty:ty),*) -> $ret:ty) => {{
+        #[cfg(target_arch = "x86_64")]
+        {
+            #[target_feature(enable = "avx2,fma")]
+            unsafe fn fast($($arg: $ty),*) -> $ret {
+                $body::<true>($($arg),*)
+            }
+            if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
+                // SAFETY: the features `fast` is compiled for were detected at run time.
+                return unsafe { fast($($arg),*) };
+            }
+        }
+        $body::<false>($($arg),*)
+    }};
+}
+
 /// `acc[k] += b[k] c` for every k, each step the operations of `acc[k] + b[k] * c` (the
 /// product as `mul_dd` forms it, the sum as `add_dd`): the same results, finite or not,
 /// without the branches that keep the loop scalar. Where the processor has them (detected at
 /// run time, so the build needs no target flag), the loop runs with AVX2 and fused
 /// multiply-adds, whose `two_prod` is exact as Dekker's split is.
 pub(crate) fn mul_add_slice(acc: &mut [Dd], b: &[Dd], c: Dd) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the features the function is compiled for were detected at run time.
-            unsafe { mul_add_slice_fma(acc, b, c) };
-            return;
-        }
-    }
-    mul_add_slice_body::<false>(acc, b, c);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn mul_add_slice_fma(acc: &mut [Dd], b: &[Dd], c: Dd) {
-    mul_add_slice_body::<true>(acc, b, c);
+    with_fma!(mul_add_slice_body(acc: &mut [Dd], b: &[Dd], c: Dd) -> ())
 }
 
 #[inline(always)]
@@ -204,21 +210,7 @@ fn div_nb<const FMA: bool>(a: Dd, b: Dd) -> Dd {
 /// `out[i] = a[i] b[i]`, each the result of `mul_dd`, on AVX2/FMA where detected (as
 /// [`mul_add_slice`]).
 pub(crate) fn mul_slice(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the features the function is compiled for were detected at run time.
-            unsafe { mul_slice_fma(out, a, b) };
-            return;
-        }
-    }
-    mul_slice_body::<false>(out, a, b);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn mul_slice_fma(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
-    mul_slice_body::<true>(out, a, b);
+    with_fma!(mul_slice_body(out: &mut [Dd], a: &[Dd], b: &[Dd]) -> ())
 }
 
 #[inline(always)]
@@ -245,21 +237,7 @@ pub(crate) fn div_slice(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
         }
         return;
     }
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the features the function is compiled for were detected at run time.
-            unsafe { div_slice_fma(out, a, b) };
-            return;
-        }
-    }
-    div_slice_body::<false>(out, a, b);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn div_slice_fma(out: &mut [Dd], a: &[Dd], b: &[Dd]) {
-    div_slice_body::<true>(out, a, b);
+    with_fma!(div_slice_body(out: &mut [Dd], a: &[Dd], b: &[Dd]) -> ())
 }
 
 #[inline(always)]
@@ -285,20 +263,7 @@ const DOT_LANES: usize = 16;
 /// with the lanes in the vector registers where the processor has AVX2 and FMA (as
 /// [`mul_add_slice`]).
 pub(crate) fn dot_add(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::is_x86_feature_detected!("fma") && std::is_x86_feature_detected!("avx2") {
-            // SAFETY: the features the function is compiled for were detected at run time.
-            return unsafe { dot_add_fma(acc, a, b) };
-        }
-    }
-    dot_add_body::<false>(acc, a, b)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn dot_add_fma(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd {
-    dot_add_body::<true>(acc, a, b)
+    with_fma!(dot_add_body(acc: Dd, a: &[Dd], b: &[Dd]) -> Dd)
 }
 
 #[inline(always)]

@@ -1048,7 +1048,7 @@ impl<T: Scalar> Solution<T> {
         for n in 0..steps.len() {
             let q = n.min(4);
             let (t, b) = (steps[n].t, steps[n].b);
-            let (t0, b0) = if n >= q && q > 0 {
+            let (t0, b0) = if q > 0 {
                 (steps[n - q].t, steps[n - q].b)
             } else {
                 (T::of(0.0), T::of(0.0))
