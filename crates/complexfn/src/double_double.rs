@@ -353,18 +353,11 @@ impl Dd {
     }
     #[inline(always)]
     fn add_dd(self, b: Dd) -> Dd {
-        let (s, e) = two_sum(self.hi, b.hi);
+        let s = self.hi + b.hi;
         if !s.is_finite() {
             return Dd::from_f64(s);
         }
-        let (t, f) = two_sum(self.lo, b.lo);
-        let e = e + t;
-        let (s, e) = if e == 0.0 {
-            (s, e)
-        } else {
-            quick_two_sum(s, e)
-        };
-        Dd::quick(s, e + f)
+        add_nb(self, b)
     }
     #[inline(always)]
     fn add_f64(self, b: f64) -> Dd {

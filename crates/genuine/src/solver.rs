@@ -352,13 +352,23 @@ impl<T: Real> RowCache<T> {
         }
         match self.rows.get(&k) {
             Some(full) if basis.degree() == self.degree => full.clone(),
-            Some(full) => full
-                .chunks_exact(self.degree)
-                .flat_map(|f| f[..basis.degree()].iter().cloned())
-                .collect(),
+            Some(full) => leading_columns(full, self.degree, basis.degree()),
             None => compute(),
         }
     }
+}
+
+/// Collocation points as (k, x, p - x), t = k h/4 on the row rule's grid
+/// ([`Problem::collocation_points`]).
+type CollocationPoints<T> = Vec<(i64, T, T)>;
+
+/// The values of a basis of degree `n` taken from those of a basis of the same families and
+/// degree `big` >= n (laid out a family's `big` values after another, per row): each family's
+/// first n, the values a fill at degree n gives (the Chebyshev recurrence being the same).
+fn leading_columns<T: Clone>(full: &[T], big: usize, n: usize) -> Vec<T> {
+    full.chunks_exact(big)
+        .flat_map(|f| f[..n].iter().cloned())
+        .collect()
 }
 
 /// The contour functionals of [`Problem::contour_loads`]: the load's, the coarse level's, the
@@ -741,25 +751,25 @@ impl<T: Real> Problem<T> {
     }
 
     /// The collocation points of a fit of `basis` with the options `opts`.
-    fn fit_points(&self, basis: &Basis<T>, opts: &SolveOptions) -> Vec<(i64, T, T)> {
+    fn fit_points(&self, basis: &Basis<T>, opts: &SolveOptions) -> CollocationPoints<T> {
         let count = ((basis.len() as f64) * opts.oversample).ceil() as usize;
         self.collocation_points(count, opts.h_quad)
     }
 
-    /// The collocation least-squares solve of `basis` (its values at the row samples `bv`):
-    /// coefficients normalised by the force moment, and the max residual of the scaled rows.
+    /// The collocation least-squares solve of `basis` (its values at the row samples `bv`) at
+    /// the collocation points `pts` ([`Self::fit_points`]): coefficients normalised by the
+    /// force moment, and the max residual of the scaled rows.
     fn fit(
         &self,
         basis: &Basis<T>,
         rows: &[Sample<T>],
         bv: &[T],
         cols: &RowColumns<T>,
-        opts: &SolveOptions,
+        pts: &[(i64, T, T)],
         cache: &RowCache<T>,
     ) -> Result<(Vec<T>, f64)> {
         let kk = basis.len();
         let like = &self.p;
-        let pts = self.fit_points(basis, opts);
         let mpts = pts.len();
         if mpts < kk {
             return Err(GenuineError::NoConvergence {
@@ -900,9 +910,22 @@ impl<T: CachedRules> GenuineCase<T> {
         let cols = RowColumns::new(&rows);
         // the fine basis's rows at the fine fit's and the plateau probe's points, computed
         // once on the available threads; the coarser degrees take theirs from there too
-        let mut points = prob.fit_points(&basis, &opts);
+        let fine_points = prob.fit_points(&basis, &opts);
+        // the fits besides the fine one: the coarser degrees, then the plateau probe
+        let mut jobs: Vec<(Basis<T>, CollocationPoints<T>)> = sizes
+            .iter()
+            .map(|&n| {
+                let b = prob.basis(n, &opts);
+                let pts = prob.fit_points(&b, &opts);
+                (b, pts)
+            })
+            .collect();
         if plateau {
-            points.extend(prob.fit_points(&basis, &other));
+            jobs.push((basis.clone(), prob.fit_points(&basis, &other)));
+        }
+        let mut points = fine_points.clone();
+        if plateau {
+            points.extend(jobs.last().map_or(&[][..], |j| &j.1[..]).iter().cloned());
             points.sort_unstable_by_key(|q| q.0);
             points.dedup_by_key(|q| q.0);
         }
@@ -911,26 +934,23 @@ impl<T: CachedRules> GenuineCase<T> {
         });
         // the fits are independent given the rows: the fine one, the coarser degrees and the
         // plateau probe's, solved in parallel (the same numbers as one after the other)
-        let mut jobs: Vec<(Basis<T>, &SolveOptions)> = sizes
-            .iter()
-            .map(|&n| (prob.basis(n, &opts), &opts))
-            .collect();
-        if plateau {
-            jobs.push((basis.clone(), &other));
-        }
-        let fine_job = || prob.fit(&basis, &rows, &bv, &cols, &opts, &cache);
+        let fine_job = || prob.fit(&basis, &rows, &bv, &cols, &fine_points, &cache);
         let other_jobs = || {
             use rayon::prelude::*;
             jobs.into_par_iter()
-                .map(|(b, o)| {
+                .map(|(b, pts)| {
+                    // a coarser basis is a part of the fine one: its values from the fine fill
                     let own;
-                    let values = if b.len() == basis.len() {
-                        &bv
-                    } else {
+                    let values = if b.families() != basis.families() {
                         own = prob.basis_values(&b, &rows);
                         &own
+                    } else if b.degree() == basis.degree() {
+                        &bv
+                    } else {
+                        own = leading_columns(&bv, basis.degree(), b.degree());
+                        &own
                     };
-                    let (c, r) = prob.fit(&b, &rows, values, &cols, o, &cache)?;
+                    let (c, r) = prob.fit(&b, &rows, values, &cols, &pts, &cache)?;
                     Ok((b, c, r))
                 })
                 .collect::<Result<Vec<_>>>()

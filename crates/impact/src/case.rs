@@ -1046,18 +1046,8 @@ impl<T: Scalar> Solution<T> {
         let steps = &run.steps;
         let mut open: Option<T> = None;
         for n in 0..steps.len() {
-            let q = n.min(4);
-            let (t, b) = (steps[n].t, steps[n].b);
-            let (t0, b0) = if q > 0 {
-                (steps[n - q].t, steps[n - q].b)
-            } else {
-                (T::of(0.0), T::of(0.0))
-            };
-            let speed = if t > t0 {
-                (b - b0) / (t - t0)
-            } else {
-                T::of(0.0)
-            };
+            let t = steps[n].t;
+            let speed = crate::march::recent_edge_speed(&steps[..=n], run.dt);
             let inside = speed > self.s_r && speed < 1.0;
             match (inside, open) {
                 (true, None) => open = Some(t),

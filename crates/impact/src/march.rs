@@ -253,6 +253,20 @@ fn pow<T: Scalar>(d: T, e: T) -> T {
     }
 }
 
+/// The edge's speed (units c1) over the last (up to four) of `steps`, which are at least one,
+/// from their reported edges (the edge at t = 0 is 0): the speed the march takes for the edge
+/// model of the next step, and the report for its edges without solution.
+pub(crate) fn recent_edge_speed<T: Scalar>(steps: &[StepState<T>], dt: T) -> T {
+    let n = steps.len();
+    let q = n.clamp(1, 4);
+    let before = if n > q {
+        steps[n - 1 - q].b
+    } else {
+        T::of(0.0)
+    };
+    (steps[n - 1].b - before) / (dt * q as f64)
+}
+
 /// The most fixed-point iterations of one step on the force (kinematic law), in f64; in
 /// proportion to the significand's bits at other precisions.
 const ITERATIONS: usize = 50;
@@ -795,17 +809,10 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
     /// (the edge at t = 0 is 0); over the first step, from the geometric edge `kin_b` at its
     /// end.
     fn edge_speed(&self, kin_b: T) -> T {
-        let n = self.steps.len();
-        if n == 0 {
+        if self.steps.is_empty() {
             return kin_b / self.dt;
         }
-        let q = n.min(4);
-        let before = if n > q {
-            self.steps[n - 1 - q].b
-        } else {
-            T::of(0.0)
-        };
-        (self.steps[n - 1].b - before) / (self.dt * q as f64)
+        recent_edge_speed(&self.steps, self.dt)
     }
 
     /// The local model of the edge cell for the current edge speed and law (`lamb::edge`);
