@@ -6,7 +6,7 @@ use clap::Args;
 use complexfn::{Dd, Real};
 use impact::scalar::Scalar;
 use impact::{
-    Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, ShellStriker, Solution, Striker,
+    Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, ShellStriker, Solution, Stop, Striker,
     StrikerMaterial, Value as Est,
 };
 use serde_json::{json, Map, Value};
@@ -53,7 +53,9 @@ pub struct RunArgs {
     /// The edge law: signorini (unilateral conditions) or kinematic (eq (4), f(b) = h).
     #[arg(long, default_value = "signorini")]
     law: String,
-    /// End time, c1t/R=VALUE.
+    /// End time: c1t/R=VALUE (the last reported time exactly), or `separation` (shortly
+    /// after the free striker leaves the surface; at most c1 t/R = 400) or
+    /// `separation:max=VALUE` (at most c1 t/R = VALUE).
     #[arg(long)]
     end: String,
     /// The length scale R in metres for the flat punch, the wedge and the power law (the
@@ -86,6 +88,13 @@ pub struct RunArgs {
     /// inputs are taken as their nearest doubles. Omit for f64.
     #[arg(long)]
     digits: Option<u32>,
+    /// Run even when the estimated memory exceeds the limit (4 GiB by default, or
+    /// --memory-limit-gib).
+    #[arg(long)]
+    force: bool,
+    /// The memory limit in GiB above which a run is refused without --force.
+    #[arg(long, default_value_t = impact::cost::DEFAULT_MEMORY_LIMIT_GIB)]
+    memory_limit_gib: f64,
 }
 
 type R<T> = std::result::Result<T, String>;
@@ -258,6 +267,32 @@ fn time_list(spec: &str, flag: &str) -> R<Vec<f64>> {
         .collect()
 }
 
+/// The default cap of `--end separation`, c1 t/R.
+pub const SEPARATION_CAP: f64 = 400.0;
+
+/// `--end`: an end time, or the separation with its cap.
+fn end_spec(spec: &str) -> R<(f64, Stop)> {
+    if let Some(rest) = spec.strip_prefix("separation") {
+        let cap = match rest.strip_prefix(':') {
+            None if rest.is_empty() => SEPARATION_CAP,
+            Some(kvs) => one(&kv(kvs, "--end")?, "max", "--end separation:max=VALUE")?,
+            None => {
+                return Err(format!(
+                    "invalid --end {spec:?}: c1t/R=VALUE, separation or separation:max=VALUE"
+                ))
+            }
+        };
+        return Ok((cap, Stop::AtSeparation));
+    }
+    let end = time_list(spec, "--end").map_err(|_| {
+        format!("invalid --end {spec:?}: c1t/R=VALUE, separation or separation:max=VALUE")
+    })?;
+    if end.len() != 1 {
+        return Err("invalid --end: one time, c1t/R=VALUE".into());
+    }
+    Ok((end[0], Stop::AtEnd))
+}
+
 /// The striker from `--striker` (speeds in m/s over the half-plane's c1 in m/s).
 fn striker(a: &RunArgs) -> R<Striker> {
     let spec = a.striker.as_str();
@@ -331,10 +366,7 @@ pub fn case(a: &RunArgs) -> R<ImpactCase> {
         "kinematic" => EdgeLaw::Kinematic,
         other => return Err(format!("invalid --law {other:?}: signorini or kinematic")),
     };
-    let end = time_list(&a.end, "--end")?;
-    if end.len() != 1 {
-        return Err("invalid --end: one time, c1t/R=VALUE".into());
-    }
+    let (end, stop) = end_spec(&a.end)?;
     let drive = match (&a.driven, a.mass_ratio, a.v0_over_c1) {
         (Some(_), Some(_), _) | (Some(_), _, Some(_)) => {
             return Err(
@@ -374,7 +406,14 @@ pub fn case(a: &RunArgs) -> R<ImpactCase> {
         (None, None, _) => return Err("missing --mass-ratio (or --driven)".into()),
         (None, _, None) => return Err("missing --v0-over-c1 (or --driven)".into()),
     };
-    let mut c = ImpactCase::new(nu, prof, drive, law, end[0]).with_striker(striker);
+    if stop == Stop::AtSeparation && !matches!(drive, Drive::Free { .. }) {
+        return Err(
+            "invalid --end separation: only a free striker separates (give --mass-ratio and --v0-over-c1, or an end time c1t/R=VALUE)"
+                .into(),
+        );
+    }
+    let mut c = ImpactCase::new(nu, prof, drive, law, end).with_striker(striker);
+    c.stop = stop;
     c.dx = a.dx;
     c.kappa = a.kappa;
     c.levels = a.levels;
@@ -388,6 +427,21 @@ pub fn case(a: &RunArgs) -> R<ImpactCase> {
         }
     };
     Ok(c)
+}
+
+/// The bound of |energy_defect| above which a run's energy audit is flagged.
+pub const ENERGY_DEFECT_BOUND: f64 = 1e-2;
+
+/// The fewest cells across the largest contact half-width of the finest grid for a contact
+/// not to be flagged as under-resolved.
+pub const MIN_CONTACT_CELLS: usize = 10;
+
+/// V0/c1 of a free striker (0 when driven).
+fn v0_of(c: &ImpactCase) -> f64 {
+    match c.drive {
+        Drive::Free { v0_over_c1, .. } => v0_over_c1,
+        _ => 0.0,
+    }
 }
 
 /// How the report writes a value: f64 as it is, or to a number of significant digits.
@@ -452,6 +506,28 @@ fn report<T: Scalar>(
         }
     }
     out.insert("profile".into(), json!(sol.case.profile.label()));
+    match &sol.case.drive {
+        Drive::Free {
+            mass_ratio,
+            v0_over_c1,
+        } => {
+            out.insert("mass_ratio".into(), json!(mass_ratio));
+            out.insert("v0_over_c1".into(), json!(v0_over_c1));
+        }
+        Drive::Speed(v) => {
+            out.insert("driven".into(), json!({"V_over_c1": v}));
+        }
+        Drive::Table(t) => {
+            out.insert("driven".into(), json!({"table_points": t.len()}));
+        }
+    }
+    out.insert(
+        "end".into(),
+        match sol.case.stop {
+            Stop::AtEnd => json!({"c1t_over_R": sol.case.end}),
+            Stop::AtSeparation => json!({"separation": true, "max_c1t_over_R": sol.case.end}),
+        },
+    );
     out.insert("poisson".into(), json!(sol.case.poisson));
     out.insert("c2_over_c1".into(), dg.of(sol.m));
     out.insert("cR_over_c1".into(), dg.of(sol.s_r));
@@ -472,10 +548,27 @@ fn report<T: Scalar>(
         }),
     );
     let mut errs = Map::new();
+    let mut why = Map::new();
+    let levels = sol.runs.len();
+    if levels < 2 {
+        why.insert(
+            "error_estimate".into(),
+            json!("one grid level (--levels 1): no refinement estimate"),
+        );
+    }
     let mut col = |key: &str, vals: Vec<(Value, Value)>| {
         let (v, e): (Vec<Value>, Vec<Value>) = vals.into_iter().unzip();
         out.insert(key.into(), Value::Array(v));
-        errs.insert(key.into(), Value::Array(e));
+        if levels >= 2 {
+            if e.iter().all(|x| !x.is_null()) {
+                errs.insert(key.into(), Value::Array(e));
+            } else {
+                why.insert(
+                    format!("error_estimate.{key}"),
+                    json!("a coarser level has no value at some reported time"),
+                );
+            }
+        }
     };
     col("h_over_R", rows.iter().map(|r| est(&r.h)).collect());
     col(hdot_key, rows.iter().map(|r| est(&r.hdot)).collect());
@@ -488,7 +581,7 @@ fn report<T: Scalar>(
         col(
             "kinetic_energy_over_rho_c1sq_Rsq",
             rows.iter()
-                .map(|r| est(&r.kinetic.expect("free striker")))
+                .filter_map(|r| r.kinetic.as_ref().map(est))
                 .collect(),
         );
     }
@@ -500,14 +593,27 @@ fn report<T: Scalar>(
         col(
             "striker_deformation_over_R",
             rows.iter()
-                .map(|r| est(&r.striker_deformation.expect("deformable striker")))
+                .filter_map(|r| r.striker_deformation.as_ref().map(est))
                 .collect(),
         );
         col(
             "striker_energy_over_rho_c1sq_Rsq",
             rows.iter()
-                .map(|r| est(&r.striker_energy.expect("deformable striker")))
+                .filter_map(|r| r.striker_energy.as_ref().map(est))
                 .collect(),
+        );
+    }
+    if !driven {
+        col(
+            "energy_defect",
+            rows.iter()
+                .filter_map(|r| r.energy_defect.as_ref().map(est))
+                .collect(),
+        );
+    } else {
+        why.insert(
+            "energy_defect".into(),
+            json!("a driven striker has no impact energy to audit"),
         );
     }
     out.insert(
@@ -522,24 +628,156 @@ fn report<T: Scalar>(
         "stage".into(),
         Value::Array(rows.iter().map(|r| json!(r.stage.name())).collect()),
     );
-    out.insert("error_estimate".into(), Value::Object(errs));
+    // the observed orders: a negative order (the level differences grow) is no order
+    let mut ords = Map::new();
+    for (key, o) in [
+        ("h_over_R", orders.h),
+        ("b_over_R", orders.b),
+        ("force_over_rho_c1sq_R", orders.force),
+    ] {
+        match o {
+            Some(p) if p > 0.0 => {
+                ords.insert(key.into(), json!(p));
+            }
+            Some(p) => {
+                why.insert(
+                    format!("observed_order.{key}"),
+                    json!(format!(
+                        "not converging: the level differences grow from the finest pair to the coarsest (order {p:.2})"
+                    )),
+                );
+            }
+            None if levels < 3 => {
+                why.insert(
+                    format!("observed_order.{key}"),
+                    json!("fewer than three grid levels"),
+                );
+            }
+            None => {
+                why.insert(
+                    format!("observed_order.{key}"),
+                    json!("the levels agree exactly: no order to observe"),
+                );
+            }
+        }
+    }
+    match sol.peak_force() {
+        Some((f, t, true)) => {
+            out.insert(
+                "peak_force".into(),
+                json!({"force_over_rho_c1sq_R": dg.of(f), "c1t_over_R": dg.of(t)}),
+            );
+        }
+        Some((f, t, false)) => {
+            out.insert(
+                "largest_force".into(),
+                json!({"force_over_rho_c1sq_R": dg.of(f), "c1t_over_R": dg.of(t)}),
+            );
+            why.insert(
+                "peak_force".into(),
+                json!("the force had not turned down by the end of the run: largest_force is the largest so far, not a peak"),
+            );
+        }
+        None => {
+            why.insert("peak_force".into(), json!("no contact force in the run"));
+        }
+    }
+    // the rebound of a free striker
+    match sol.rebound() {
+        Ok(r) => {
+            let v0 = v0_of(&sol.case);
+            out.insert(
+                "separation_c1t_over_R".into(),
+                json!({"value": dg.of(r.separation.value), "error_estimate": r.separation.err}),
+            );
+            out.insert("restitution".into(), dg.of(r.restitution.value));
+            out.insert(
+                "rebound_speed_over_c1".into(),
+                dg.of(r.restitution.value * T::input(v0)),
+            );
+            out.insert(
+                "energy_to_half_plane".into(),
+                dg.of(r.energy_to_half_plane.value),
+            );
+            out.insert("reimpacts".into(), json!(r.reimpacts));
+            for (key, e) in [
+                ("restitution", r.restitution.err),
+                ("rebound_speed_over_c1", r.restitution.err.map(|e| e * v0)),
+                ("energy_to_half_plane", r.energy_to_half_plane.err),
+            ] {
+                match e {
+                    Some(e) => {
+                        errs.insert(key.into(), json!(e));
+                    }
+                    None => {
+                        why.insert(
+                            format!("error_estimate.{key}"),
+                            json!("one grid level, or a coarser level still in contact at the end"),
+                        );
+                    }
+                }
+            }
+        }
+        Err(reason) => {
+            for key in [
+                "separation_c1t_over_R",
+                "restitution",
+                "rebound_speed_over_c1",
+                "energy_to_half_plane",
+            ] {
+                why.insert(key.into(), json!(reason.clone()));
+            }
+        }
+    }
+    // the energy audit: the largest |energy_defect| against its bound
+    if let Some(worst) = rows
+        .iter()
+        .filter_map(|r| r.energy_defect.as_ref())
+        .map(|d| d.value.to_f64().abs())
+        .reduce(f64::max)
+    {
+        let within = worst <= ENERGY_DEFECT_BOUND;
+        let mut audit = Map::new();
+        audit.insert("largest_defect".into(), json!(worst));
+        audit.insert("bound".into(), json!(ENERGY_DEFECT_BOUND));
+        audit.insert("within_bound".into(), json!(within));
+        if !within {
+            audit.insert(
+                "note".into(),
+                json!(if sol.case.law == EdgeLaw::Kinematic {
+                    "the kinematic law's prescribed edge carries a finite energy flux (its pressure ~ d^(-1/2), its gap ~ s^(1/2)): the energy defect converges to that flux's work, not to 0 (docs/impact.md, section 9)"
+                } else {
+                    "the energy does not close to the bound: refine the grid (--dx)"
+                }),
+            );
+        }
+        out.insert("energy_audit".into(), Value::Object(audit));
+    }
+    // the contact's resolution: the largest contact half-width in cells of the finest grid
+    let widest = sol.runs[0]
+        .steps
+        .iter()
+        .map(|s| s.pressure.len())
+        .max()
+        .unwrap_or(0);
     out.insert(
-        "observed_order".into(),
-        json!({"h_over_R": orders.h, "b_over_R": orders.b, "force_over_rho_c1sq_R": orders.force}),
+        "resolution".into(),
+        json!({
+            "largest_contact_cells": widest,
+            "least_cells": MIN_CONTACT_CELLS,
+            "under_resolved": widest < MIN_CONTACT_CELLS,
+        }),
     );
-    if let Some((f, t)) = sol.peak_force() {
-        out.insert(
-            "peak_force".into(),
-            json!({"force_over_rho_c1sq_R": dg.of(f), "c1t_over_R": dg.of(t)}),
+    if widest < MIN_CONTACT_CELLS {
+        why.insert(
+            "resolution".into(),
+            json!(format!(
+                "under-resolved: the contact spans at most {widest} cells of the finest grid (at least {MIN_CONTACT_CELLS} wanted): refine --dx"
+            )),
         );
     }
-    out.insert(
-        "separation_c1t_over_R".into(),
-        match sol.separation() {
-            Some(s) => json!({"value": dg.of(s.value), "error_estimate": s.err}),
-            None => Value::Null,
-        },
-    );
+    out.insert("error_estimate".into(), Value::Object(errs));
+    out.insert("observed_order".into(), Value::Object(ords));
     // where a prescribed edge ran between c_R and c1 (no solution there, docs/edge.md
     // section 5): the intervals, always present ([] when none)
     out.insert(
@@ -559,10 +797,11 @@ fn report<T: Scalar>(
     );
     if let Some(spec) = &a.pressure_at {
         let mut list = Vec::new();
+        let last = sol.runs[0].steps.last().map_or(0.0, |s| s.t.to_f64());
         for t in time_list(spec, "--pressure-at")? {
-            if !(t > 0.0) {
+            if !(t > 0.0 && t <= last * (1.0 + 1e-12)) {
                 return Err(format!(
-                    "invalid --pressure-at time {t}: admissible range is (0, end]"
+                    "invalid --pressure-at time {t}: admissible range is (0, {last}], the run's times"
                 ));
             }
             if let Some(prof) = sol.pressure_profile(t) {
@@ -575,6 +814,9 @@ fn report<T: Scalar>(
             }
         }
         out.insert("pressure".into(), Value::Array(list));
+    }
+    if !why.is_empty() {
+        out.insert("unavailable".into(), Value::Object(why));
     }
     Ok((Value::Object(out), rows))
 }
@@ -669,21 +911,66 @@ pub fn csv(v: &Value, cmdline: &str) -> String {
 /// Runs the subcommand: the report as JSON (the caller prints it, or its CSV form).
 pub fn run(a: &RunArgs, version: &str) -> R<Value> {
     let c = case(a)?;
-    let bar = indicatif::ProgressBar::new(1000);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {percent}% {elapsed}")
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    if !(a.memory_limit_gib.is_finite() && a.memory_limit_gib > 0.0) {
+        return Err(format!(
+            "invalid --memory-limit-gib {}: admissible range is (0, inf)",
+            a.memory_limit_gib
+        ));
+    }
+    if let Some(spec) = &a.pressure_at {
+        for t in time_list(spec, "--pressure-at")? {
+            if !(t > 0.0 && t <= c.end) {
+                return Err(format!(
+                    "invalid --pressure-at time {t}: admissible range is (0, {}], the run's times",
+                    c.end
+                ));
+            }
+        }
+    }
+    let cost = c.cost_estimate();
+    if cost.gib() > a.memory_limit_gib && !a.force {
+        return Err(format!(
+            "the run would take about {:.1} GiB ({} steps by {} cells on the finest grid), above the limit of {} GiB: raise --dx, shorten --end, or pass --force (or --memory-limit-gib)",
+            cost.gib(),
+            cost.steps,
+            cost.width,
+            a.memory_limit_gib
+        ));
+    }
+    // progress on stderr, shown once a run has taken a few seconds (and hidden by
+    // indicatif where stderr is not a terminal)
+    let bar = indicatif::ProgressBar::with_draw_target(
+        Some(1000),
+        indicatif::ProgressDrawTarget::hidden(),
     );
-    let progress = |f: f64| bar.set_position((f * 1000.0) as u64);
+    bar.set_style(
+        indicatif::ProgressStyle::with_template(
+            "{bar:40} {percent}% {msg} elapsed {elapsed} remaining ~{eta}",
+        )
+        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let start = std::time::Instant::now();
+    let shown = std::cell::Cell::new(false);
+    let progress = |p: impact::Progress| {
+        if !shown.get() && start.elapsed().as_secs_f64() > PROGRESS_AFTER_S {
+            bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
+            shown.set(true);
+        }
+        bar.set_message(format!(
+            "level {} step {} c1t/R {:.3}",
+            p.level, p.step, p.t
+        ));
+        bar.set_position((p.fraction * 1000.0) as u64);
+    };
     let v = match a.digits {
         None => {
-            let sol = c.solve(progress).map_err(|e| e.to_string())?;
+            let sol = c.solve_reporting::<f64>(progress).map_err(|e| e.to_string())?;
             let (mut v, rows) = report(a, &sol, version, None)?;
             shell_energy_columns(&sol, &rows, &mut v)?;
             v
         }
         Some(d) if (1..=MAX_DIGITS).contains(&d) => {
-            let sol = c.solve_at::<Dd>(progress).map_err(|e| e.to_string())?;
+            let sol = c.solve_reporting::<Dd>(progress).map_err(|e| e.to_string())?;
             report(a, &sol, version, Some(d as usize))?.0
         }
         Some(d) => {
@@ -695,6 +982,9 @@ pub fn run(a: &RunArgs, version: &str) -> R<Value> {
     bar.finish_and_clear();
     Ok(v)
 }
+
+/// Seconds after which a run shows its progress.
+const PROGRESS_AFTER_S: f64 = 2.0;
 
 /// The shell striker's strain and vibration energies with their estimates, added to the
 /// report's columns (f64: the shell runs in f64 only).

@@ -62,6 +62,32 @@ pub enum Drive {
     Table(Vec<(f64, f64)>),
 }
 
+/// Where a march stands ([`ImpactCase::solve_reporting`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Progress {
+    /// The share of the whole run's estimated work done, in [0, 1] (the levels weighted by
+    /// their cost).
+    pub fraction: f64,
+    /// The refinement level being marched (0 the finest).
+    pub level: usize,
+    /// Its step.
+    pub step: usize,
+    /// Its time c1 t/R.
+    pub t: f64,
+}
+
+/// Where a run stops.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stop {
+    /// At the end time [`ImpactCase::end`], the last reported time exactly.
+    AtEnd,
+    /// Shortly after the striker separates (free striker): the first reported time at least
+    /// one reporting interval after the finest grid's separation; [`ImpactCase::end`] is then
+    /// the safety cap (a run that has not separated by then ends there, its separation
+    /// reported unavailable).
+    AtSeparation,
+}
+
 /// The inputs of a case.
 #[derive(Clone, Debug)]
 pub struct ImpactCase {
@@ -75,8 +101,10 @@ pub struct ImpactCase {
     pub drive: Drive,
     /// The edge law.
     pub law: EdgeLaw,
-    /// End time c1 t/R.
+    /// End time c1 t/R (the cap with [`Stop::AtSeparation`]).
     pub end: f64,
+    /// Where the run stops (default [`Stop::AtEnd`]).
+    pub stop: Stop,
     /// Cell width dx/R of the finest grid.
     pub dx: f64,
     /// kappa = c1 dt/dx (>= 2).
@@ -100,6 +128,7 @@ impl ImpactCase {
             drive,
             law,
             end,
+            stop: Stop::AtEnd,
             dx: 0.01,
             kappa: 2.0,
             levels: 3,
@@ -217,7 +246,7 @@ impl ImpactCase {
             return Err(invalid(
                 "kappa = c1 dt/dx",
                 self.kappa,
-                "[2, 64] (below 2 the marching scheme is unstable)",
+                "[0.5, 64] (the march is stable for every kappa; below 1/2 its cost grows as kappa^-2 while its error does not fall)",
             ));
         }
         if !(1..=4).contains(&self.levels) {
@@ -284,6 +313,15 @@ impl ImpactCase {
         &self,
         mut progress: impl FnMut(f64),
     ) -> Result<Solution<T>> {
+        self.solve_reporting::<T>(|p| progress(p.fraction))
+    }
+
+    /// Solves the case as [`ImpactCase::solve_at`], reporting every 64 steps where the march
+    /// stands ([`Progress`]).
+    pub fn solve_reporting<T: Scalar + CachedRules>(
+        &self,
+        mut report: impl FnMut(Progress),
+    ) -> Result<Solution<T>> {
         self.validate()?;
         let extended = T::BITS > 53;
         if extended && !matches!(self.striker, Striker::Rigid) {
@@ -303,14 +341,7 @@ impl ImpactCase {
         let hp = HalfPlane::from_poisson(T::input(self.poisson))?;
         let m = *hp.m();
         let s_r = *hp.s_r();
-        let mut tables = Tables::new(hp, T::input(self.kappa))?;
         let m64 = m.to_f64();
-        // the elastic striker's tables are normalised like the half-plane's and serve every
-        // level; the shell's depend on dx and are built per level
-        let mut shared = match self.striker {
-            Striker::Elastic(_) => self.striker.compliance(m64, self.dx, self.kappa)?,
-            _ => None,
-        };
         let motion = match &self.drive {
             Drive::Free {
                 mass_ratio,
@@ -322,25 +353,89 @@ impl ImpactCase {
             Drive::Speed(v) => Motion::DrivenSpeed(*v),
             Drive::Table(t) => Motion::DrivenTable(t.clone()),
         };
-        let mut runs = Vec::new();
-        // cost ~ steps^2: the finest level dominates; run coarse first
+        // The levels share their time levels (`docs/impact.md`, section 5): the coarsest
+        // step dt_c, and dt_c/2, dt_c/4, ... below it, so that every level has a value at
+        // every reported time. To an end time, dt_c = end/N_c exactly (kappa then differs from
+        // the request by under 1/(2 N_c) relative); to the separation, dt_c = kappa dx_c.
+        let top = self.levels - 1;
+        let coarse_nominal = self.kappa * self.dx * (1u64 << top) as f64;
+        let (dt_coarse, coarse_steps): (T, Option<usize>) = match self.stop {
+            Stop::AtEnd => {
+                let n = (self.end / coarse_nominal).round().max(1.0) as usize;
+                (T::input(self.end) / n as f64, Some(n))
+            }
+            Stop::AtSeparation => (
+                T::input(self.kappa) * T::input(self.dx) * (1u64 << top) as f64,
+                None,
+            ),
+        };
+        // each level's cell width: the input dx times 2^level, the flat punch's adjusted so
+        // that its cells exactly cover [0, a]
+        let level_dx = |level: usize| -> T {
+            let grid_dx = T::input(self.dx) * (1u64 << level) as f64;
+            match self.profile {
+                Profile::Flat { half_width } => {
+                    let cells = (half_width / grid_dx.to_f64() - 0.5).round().max(1.0);
+                    T::input(half_width) / (cells + 0.5)
+                }
+                _ => grid_dx,
+            }
+        };
+        let level_dt = |level: usize| dt_coarse / (1u64 << (top - level)) as f64;
+        // the tables by kappa = dt/dx: one set for every level, except the flat punch's
+        let shared_kappa = !matches!(self.profile, Profile::Flat { .. });
+        let mut shared_tables = if shared_kappa {
+            Some(Tables::new(hp.clone(), level_dt(0) / level_dx(0))?)
+        } else {
+            None
+        };
+        let mut shared = match (&self.striker, shared_kappa) {
+            (Striker::Elastic(_), true) => {
+                self.striker
+                    .compliance(m64, self.dx, (level_dt(0) / level_dx(0)).to_f64())?
+            }
+            _ => None,
+        };
+        let valid_end = self.striker.validity_end();
+        let mut runs: Vec<Option<Run<T>>> = (0..self.levels).map(|_| None).collect();
+        // to an end time: coarse first (cost ~ steps^2, the finest level dominates); to the
+        // separation: the finest first, which sets the common end
+        let order: Vec<usize> = match self.stop {
+            Stop::AtEnd => (0..self.levels).rev().collect(),
+            Stop::AtSeparation => (0..self.levels).collect(),
+        };
         let total: f64 = (0..self.levels).map(|l| 0.25f64.powi(l as i32)).sum();
         let mut done = 0.0;
-        for level in (0..self.levels).rev() {
-            // the cell width at the march's precision (the input dx times 2^level)
-            let mut grid_dx = T::input(self.dx) * (1u64 << level) as f64;
-            if let Profile::Flat { half_width } = self.profile {
-                // cells 0..=N exactly cover [0, a]
-                let cells = (half_width / grid_dx.to_f64() - 0.5).round().max(1.0);
-                grid_dx = T::input(half_width) / (cells + 0.5);
-            }
+        let mut common_end: Option<(usize, T)> = coarse_steps.map(|n| (n, T::input(self.end)));
+        for level in order {
+            let grid_dx = level_dx(level);
+            let dt = level_dt(level);
+            let kappa = dt / grid_dx;
             let dx = grid_dx.to_f64();
-            let mut own = match self.striker {
-                Striker::Shell(_) => self.striker.compliance(m64, dx, self.kappa)?,
+            let mut own_tables = match shared_tables {
+                Some(_) => None,
+                None => Some(Tables::new(hp.clone(), kappa)?),
+            };
+            let tables = match (own_tables.as_mut(), shared_tables.as_mut()) {
+                (Some(t), _) | (None, Some(t)) => t,
+                (None, None) => unreachable!("one set of tables exists"),
+            };
+            let mut own = match (&self.striker, shared_kappa) {
+                (Striker::Shell(_), _) | (Striker::Elastic(_), false) => {
+                    self.striker.compliance(m64, dx, kappa.to_f64())?
+                }
                 _ => None,
             };
-            let march = March::new(
-                &mut tables,
+            let scale = 1u64 << (top - level);
+            // the steps of this level to the common end, if known, and the cap
+            let cap_steps = ((self.end.min(valid_end) / dt.to_f64()) + 1e-9).floor() as usize;
+            let target = common_end.map(|(n, end)| (n * scale as usize, end));
+            let horizon = match self.stop {
+                Stop::AtEnd => target.map_or(cap_steps, |(n, _)| n),
+                Stop::AtSeparation => cap_steps,
+            };
+            let mut march = March::new(
+                &mut *tables,
                 own.as_mut()
                     .or(shared.as_mut())
                     .and_then(|c| T::striker_rows(c)),
@@ -348,44 +443,94 @@ impl ImpactCase {
                 &motion,
                 self.law,
                 grid_dx,
-                T::input(self.kappa),
+                dt,
             )
-            .with_edge_gap_scale(self.edge_gap_scale(m64).map(T::of));
-            // the nearest step to the end time, never past the striker model's validity
-            let dt64 = march.dt().to_f64();
-            let valid = (self.striker.validity_end() / dt64 + 1e-9).floor();
-            let nsteps = (self.end / dt64).round().min(valid) as usize;
-            let mut march = march.with_horizon(nsteps);
+            .with_edge_gap_scale(self.edge_gap_scale(m64).map(T::of))
+            .with_horizon(horizon);
+            if let Some((n, end)) = target {
+                march = march.with_end(n, end);
+            }
             let weight = 0.25f64.powi(level as i32) / total;
-            for n in 0..nsteps {
-                if !march.step()? {
+            let mut goal = target.map(|(n, _)| n);
+            let mut n = 0usize;
+            loop {
+                match goal {
+                    Some(g) if n >= g => {
+                        // to the separation, a coarser level still in contact at the common
+                        // end goes on to its own separation (its restitution is its own)
+                        let on =
+                            self.stop == Stop::AtSeparation && !march.separated() && n < cap_steps;
+                        if !on {
+                            break;
+                        }
+                    }
+                    None if march.separated() || n >= cap_steps => {
+                        // the finest level sets the common end: the first coarse step at
+                        // least one coarse step after its separation (or the cap)
+                        let t_stop = match march.separations.last() {
+                            Some(&ts) if march.separated() => ts,
+                            _ => march.time(n),
+                        };
+                        let nc = ((t_stop / dt_coarse).to_f64() + 1e-9).floor() as usize + 2;
+                        let nc = nc.min(cap_steps / scale as usize).max(1);
+                        let end = dt_coarse * nc as f64;
+                        common_end = Some((nc, end));
+                        let g = nc * scale as usize;
+                        goal = Some(g);
+                        if g > n {
+                            march = march.with_end(g, end);
+                        }
+                        continue;
+                    }
+                    _ => {}
+                }
+                if n >= cap_steps {
                     break;
                 }
+                march.step()?;
+                n += 1;
                 if n % 64 == 0 {
-                    progress(done + weight * n as f64 / nsteps as f64);
+                    let frac = n as f64 / goal.unwrap_or(cap_steps).max(1) as f64;
+                    report(Progress {
+                        fraction: done + weight * frac.min(1.0),
+                        level,
+                        step: n,
+                        t: march.time(n).to_f64(),
+                    });
                 }
             }
             done += weight;
-            let (dt, steps, separation) = (
-                march.dt(),
+            let (steps, separations, reimpacts) = (
                 std::mem::take(&mut march.steps),
-                march.separation,
+                std::mem::take(&mut march.separations),
+                std::mem::take(&mut march.reimpacts),
             );
+            drop(march);
             let striker_err = own
                 .as_ref()
                 .or(shared.as_ref())
                 .map(|c| c.error())
                 .unwrap_or(0.0);
-            runs.push(Run {
+            let coefficient_error = tables.error() + striker_err;
+            runs[level] = Some(Run {
                 dx: grid_dx,
                 dt,
                 steps,
-                separation,
-                coefficient_error: tables.error() + striker_err,
+                separations,
+                reimpacts,
+                coefficient_error,
             });
         }
-        progress(1.0);
-        runs.reverse();
+        let runs: Vec<Run<T>> = runs.into_iter().flatten().collect();
+        report(Progress {
+            fraction: 1.0,
+            level: 0,
+            step: runs.first().map_or(0, |r| r.steps.len()),
+            t: runs
+                .first()
+                .and_then(|r| r.steps.last())
+                .map_or(0.0, |s| s.t.to_f64()),
+        });
         Ok(Solution {
             case: self.clone(),
             m,
@@ -408,8 +553,10 @@ pub struct Run<T = f64> {
     pub dt: T,
     /// The steps.
     pub steps: Vec<StepState<T>>,
-    /// Separation time (free striker), if any.
-    pub separation: Option<T>,
+    /// The times the contact ended, in order (the end of the last step in contact).
+    pub separations: Vec<T>,
+    /// The times contact began again after a separation.
+    pub reimpacts: Vec<T>,
     /// A bound of the error of the normalised influence coefficients used (quadrature of the
     /// half-plane's and an elastic striker's tables, truncation of a shell's modal sums).
     pub coefficient_error: f64,
@@ -661,6 +808,26 @@ pub struct HistoryRow<T = f64> {
     /// energy: the work of the contact pressure on its surface) over rho c1^2 R^2; `None`
     /// for a rigid striker.
     pub striker_energy: Option<Value<T>>,
+    /// (kinetic + work on the half-plane + the striker's energy - impact energy)/impact
+    /// energy (free striker; `docs/impact.md`, section 9).
+    pub energy_defect: Option<Value<T>>,
+}
+
+/// The rebound of a free striker, after its last separation ([`Solution::rebound`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Rebound<T = f64> {
+    /// c1 t/R at which the contact last ended (the end of the last step in contact).
+    pub separation: Value<T>,
+    /// The coefficient of restitution -V_final/V0, V_final the striker's speed after the
+    /// separation (constant in free flight).
+    pub restitution: Value<T>,
+    /// The work done on the half-plane over the impact energy (1/2) m0 V0^2: the share of
+    /// the impact energy carried off by the half-plane's waves (in plane strain no static
+    /// field remains).
+    pub energy_to_half_plane: Value<T>,
+    /// The number of re-impacts (contacts begun after a separation) before the last
+    /// separation.
+    pub reimpacts: usize,
 }
 
 /// The observed convergence order of each quantity.
@@ -701,16 +868,90 @@ impl<T: Scalar> Solution<T> {
         self.runs.last().map(|r| r.dt).unwrap_or(T::of(0.0))
     }
 
-    /// Separation time c1 t/R of the finest grid, with the spread over the levels as its
-    /// error estimate.
+    /// The estimate of a quantity known on every level (finest first) as one number per
+    /// level: the difference of the two finest levels (or half that of the next pair, if
+    /// larger), extrapolated with the observed order where three levels show one above 1/2,
+    /// times the safety factor of the histories; `None` with one level.
+    fn level_estimate(values: &[f64]) -> Option<f64> {
+        if values.len() < 2 || values.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        let d1 = (values[0] - values[1]).abs();
+        let d2 = values.get(2).map(|c| (values[1] - c).abs());
+        let factor = match d2 {
+            Some(d2) if d1 > 0.0 && d2 > 0.0 => {
+                let p = (d2 / d1).log2();
+                if p > 0.5 {
+                    (1.0 / (2f64.powf(p) - 1.0)).max(1.0)
+                } else {
+                    2.0
+                }
+            }
+            _ => 1.0,
+        };
+        Some(ESTIMATE_SAFETY * d1.max(0.5 * d2.unwrap_or(0.0)) * factor)
+    }
+
+    /// Separation time c1 t/R of the finest grid (the last time the contact ended, the
+    /// striker off the surface at the run's end), with its estimate from the levels'
+    /// separations (never below the finest step); `None` when the finest grid's striker is
+    /// in contact at the end or never separated.
     pub fn separation(&self) -> Option<Value<T>> {
-        let s0 = self.runs[0].separation?;
-        let err = self
-            .runs
-            .get(1)
-            .and_then(|r| r.separation)
-            .map(|s| (s - s0).abs().max(self.runs[0].dt).to_f64());
-        Some(Value { value: s0, err })
+        self.rebound().ok().map(|r| r.separation)
+    }
+
+    /// The rebound of a free striker ([`Rebound`]), or the reason it is unavailable: a
+    /// driven striker, or one still in contact at the end of the run on one of the levels.
+    pub fn rebound(&self) -> std::result::Result<Rebound<T>, String> {
+        let Drive::Free { v0_over_c1, .. } = self.case.drive else {
+            return Err("a driven striker has no rebound".into());
+        };
+        let fine = &self.runs[0];
+        let free_at_end = |r: &Run<T>| {
+            !r.separations.is_empty() && r.steps.last().is_some_and(|s| s.pressure.is_empty())
+        };
+        if !free_at_end(fine) {
+            let t = fine.steps.last().map(|s| s.t.to_f64()).unwrap_or(0.0);
+            return Err(format!(
+                "the striker is in contact at the end of the run (c1 t/R = {t:.4}): run longer, or to --end separation"
+            ));
+        }
+        let mass = self.mass.ok_or("no mass")?;
+        let v0 = T::input(v0_over_c1);
+        let e0 = mass * v0 * v0 * 0.5;
+        let per_level = |r: &Run<T>| -> Option<(T, T, T)> {
+            if !free_at_end(r) {
+                return None;
+            }
+            let last = r.steps.last()?;
+            Some((*r.separations.last()?, -last.v / v0, last.work / e0))
+        };
+        let levels: Vec<(T, T, T)> = self.runs.iter().map_while(per_level).collect();
+        let (sep, res, work) = levels[0];
+        let pick =
+            |q: usize| -> Vec<f64> { levels.iter().map(|l| [l.0, l.1, l.2][q].to_f64()).collect() };
+        let coarser_in_contact = levels.len() < self.runs.len().min(2);
+        let est = |q: usize| -> Option<f64> {
+            if coarser_in_contact {
+                return None;
+            }
+            Self::level_estimate(&pick(q))
+        };
+        Ok(Rebound {
+            separation: Value {
+                value: sep,
+                err: est(0).map(|e| e.max(fine.dt.to_f64())),
+            },
+            restitution: Value {
+                value: res,
+                err: est(1),
+            },
+            energy_to_half_plane: Value {
+                value: work,
+                err: est(2),
+            },
+            reimpacts: fine.reimpacts.len(),
+        })
     }
 
     fn kinetic(&self, v: T) -> Option<T> {
@@ -726,21 +967,40 @@ impl<T: Scalar> Solution<T> {
         let zero = T::of(0.0);
         let last_t = fine.steps.last().map(|s| s.t).unwrap_or(zero);
         let nrep = ((last_t / dtr).to_f64() + 1e-9).floor() as usize;
-        let times: Vec<T> = (1..=nrep).map(|i| dtr * i as f64).collect();
+        // the levels share their time levels: report time i is step i dtr/dt of each level,
+        // at the time the finest level gives it (the end exactly at the last)
+        let per = |r: &Run<T>| (dtr / r.dt).to_f64().round().max(1.0) as usize;
+        let times: Vec<T> = (1..=nrep)
+            .map(|i| fine.step(i * per(fine)).map_or(dtr * i as f64, |s| s.t))
+            .collect();
         // the step of a run at a report time
-        let step_at = |r: &Run<T>, t: T| (t / r.dt).to_f64().round() as usize;
+        let step_at = |r: &Run<T>, i: usize| (i + 1) * per(r);
         // each quantity at step n (time t_n)
-        type Getter<T> = fn(&Run<T>, usize) -> Option<T>;
-        let getters: [Getter<T>; 6] = [
-            |r, n| r.step(n).map(|s| s.h),
-            |r, n| r.step(n).map(|s| s.v),
-            |r, n| r.edge_at(n),
-            |r, n| r.force_at(n),
-            |r, n| {
+        type Getter<'g, T> = Box<dyn Fn(&Run<T>, usize) -> Option<T> + 'g>;
+        // the energy defect (kinetic + work + striker's - impact energy)/impact energy of a
+        // free striker (`docs/impact.md`, section 9)
+        let energy = match (self.mass, &self.case.drive) {
+            (Some(mass), Drive::Free { v0_over_c1, .. }) => {
+                let v0 = T::input(*v0_over_c1);
+                Some((mass, mass * v0 * v0 * 0.5))
+            }
+            _ => None,
+        };
+        let getters: [Getter<'_, T>; 7] = [
+            Box::new(|r, n| r.step(n).map(|s| s.h)),
+            Box::new(|r, n| r.step(n).map(|s| s.v)),
+            Box::new(|r, n| r.edge_at(n)),
+            Box::new(|r, n| r.force_at(n)),
+            Box::new(|r, n| {
                 r.step(n)
                     .map(|s| s.ws.first().copied().unwrap_or(T::of(0.0)))
-            },
-            |r, n| r.step(n).map(|s| s.striker_work),
+            }),
+            Box::new(|r, n| r.step(n).map(|s| s.striker_work)),
+            Box::new(move |r, n| {
+                let (mass, e0) = energy?;
+                r.step(n)
+                    .map(|s| (mass * s.v * s.v * 0.5 + s.work + s.striker_work - e0) / e0)
+            }),
         ];
         // samples[q][level][i] (NaN where a level has no value)
         let samples: Vec<Vec<Vec<T>>> = getters
@@ -751,7 +1011,8 @@ impl<T: Scalar> Solution<T> {
                     .map(|r| {
                         times
                             .iter()
-                            .map(|&t| g(r, step_at(r, t)).unwrap_or(T::of(f64::NAN)))
+                            .enumerate()
+                            .map(|(i, _)| g(r, step_at(r, i)).unwrap_or(T::of(f64::NAN)))
                             .collect()
                     })
                     .collect()
@@ -775,7 +1036,7 @@ impl<T: Scalar> Solution<T> {
                 .unwrap_or(0)
         };
         let nuse = usable(0);
-        let ords: Vec<Option<f64>> = (0..6)
+        let ords: Vec<Option<f64>> = (0..7)
             .map(|q| {
                 if self.runs.len() < 3 {
                     return None;
@@ -811,7 +1072,7 @@ impl<T: Scalar> Solution<T> {
         };
         let mut rows = Vec::with_capacity(times.len());
         for (i, &t) in times.iter().enumerate() {
-            let st = &fine.steps[step_at(fine, t) - 1];
+            let st = &fine.steps[step_at(fine, i) - 1];
             let val = |q: usize, scale: T| Value {
                 value: samples[q][0][i] * scale,
                 err: if i < nuse {
@@ -860,6 +1121,7 @@ impl<T: Scalar> Solution<T> {
             };
             let deformable = !matches!(self.case.striker, Striker::Rigid);
             rows.push(HistoryRow {
+                energy_defect: energy.map(|_| val(6, one)),
                 striker_deformation: deformable.then(|| val(4, one)),
                 striker_energy: deformable.then(|| val(5, m2)),
                 t,
@@ -868,7 +1130,15 @@ impl<T: Scalar> Solution<T> {
                 b: val(2, one),
                 bdot,
                 stage,
-                force: val(3, m2),
+                force: {
+                    // under Signorini's law the force pushes: a fit through the steps'
+                    // forces (all >= 0) may dip below zero where the contact ends
+                    let mut f = val(3, m2);
+                    if self.case.law == EdgeLaw::Signorini && f.value < 0.0 {
+                        f.value = T::of(0.0);
+                    }
+                    f
+                },
                 kinetic,
                 work,
             });
@@ -1064,15 +1334,25 @@ impl<T: Scalar> Solution<T> {
         out
     }
 
-    /// Peak force over rho c1^2 R and its time, on the finest grid.
-    pub fn peak_force(&self) -> Option<(T, T)> {
+    /// The largest force over rho c1^2 R on the finest grid, its time, and whether it is a
+    /// peak: whether the force has turned down after it (the run's last force below
+    /// [`PEAK_DROP`] times the largest, or the contact over). A largest force that is not a
+    /// peak is the value at the end of a run whose force still rises.
+    pub fn peak_force(&self) -> Option<(T, T, bool)> {
         let m2 = self.m * self.m;
         let run = &self.runs[0];
-        (1..=run.steps.len())
+        let (f, t) = (1..=run.steps.len())
             .filter_map(|n| run.force_at(n).map(|f| (f * m2, run.steps[n - 1].t)))
-            .max_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal))
+            .max_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal))?;
+        let last = run.force_at(run.steps.len()).map(|f| f * m2)?;
+        let turned_down = last < f * PEAK_DROP || run.steps.last()?.pressure.is_empty();
+        Some((f, t, turned_down))
     }
 }
+
+/// The share of the largest force the run's last force must fall below for the largest to
+/// be reported as a peak ([`Solution::peak_force`]).
+pub const PEAK_DROP: f64 = 0.99;
 
 #[cfg(test)]
 mod tests {
@@ -1108,7 +1388,8 @@ mod tests {
             dx,
             dt,
             steps,
-            separation: None,
+            separations: Vec::new(),
+            reimpacts: Vec::new(),
             coefficient_error: 0.0,
         };
         (run, truth)

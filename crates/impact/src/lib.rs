@@ -12,6 +12,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod case;
+pub mod cost;
 pub mod edge_fit;
 pub mod error;
 pub mod history;
@@ -23,8 +24,8 @@ pub mod striker;
 pub mod tables;
 
 pub use case::{
-    coarse_means, Drive, HistoryRow, ImpactCase, PressureProfile, ReferenceCase, Solution, Stage,
-    Value, REFERENCE,
+    coarse_means, Drive, HistoryRow, ImpactCase, PressureProfile, Progress, Rebound, ReferenceCase,
+    Solution, Stage, Stop, Value, PEAK_DROP, REFERENCE,
 };
 pub use error::{ImpactError, Result};
 pub use march::EdgeLaw;

@@ -103,8 +103,14 @@ pub struct March<'a, T: Scalar + CachedRules = f64> {
     kcap: usize,
     /// The steps so far.
     pub steps: Vec<StepState<T>>,
-    /// Time of separation (free striker), if it happened.
-    pub separation: Option<T>,
+    /// The times the contact ended (the striker left the surface), in order: the end of the
+    /// last step in contact (`docs/impact.md`, section 9).
+    pub separations: Vec<T>,
+    /// The times contact began again after a separation (re-impacts), in order.
+    pub reimpacts: Vec<T>,
+    /// The exact end time and its step: the last step's time is this value, not n dt rounded
+    /// (the reported times end at the requested end exactly).
+    end: Option<(usize, T)>,
     /// The factor of the edge model's gap coefficient for the pair of bodies (1 for a
     /// rigid striker); `None` when the local model does not apply (a striker of other wave
     /// speeds or a shell): the edge is then captured cell by cell.
@@ -431,7 +437,7 @@ impl<T: Scalar> EdgeModel<T> {
 }
 
 impl<'a, T: Scalar + CachedRules> March<'a, T> {
-    /// A march with cell width dx and time step kappa dx (kappa from the tables), with the
+    /// A march with cell width dx and time step dt (the tables' kappa is dt/dx), with the
     /// striker's compliance (none for a rigid striker).
     pub(crate) fn new(
         tables: &'a mut Tables<T>,
@@ -440,7 +446,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         motion: &'a Motion,
         law: EdgeLaw,
         dx: T,
-        kappa: T,
+        dt: T,
     ) -> Self {
         let ext = profile.extent();
         let kcap = if ext.is_finite() {
@@ -454,7 +460,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             motion,
             law,
             dx,
-            dt: kappa * dx,
+            dt,
             kcap,
             edge_gap_scale: striker.is_none().then(|| T::of(1.0)),
             history: HistorySum::new(dx, None),
@@ -462,8 +468,31 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             systems: std::cell::RefCell::new((T::of(f64::NAN), Vec::new())),
             striker,
             steps: Vec::new(),
-            separation: None,
+            separations: Vec::new(),
+            reimpacts: Vec::new(),
+            end: None,
         }
+    }
+
+    /// Ends the march's time levels at `end` exactly after `steps` steps (the step's time
+    /// there is `end`, not `steps` dt rounded).
+    pub(crate) fn with_end(mut self, steps: usize, end: T) -> Self {
+        self.end = Some((steps, end));
+        self
+    }
+
+    /// The time t_n of step n.
+    pub fn time(&self, n: usize) -> T {
+        match self.end {
+            Some((last, end)) if n == last => end,
+            _ => self.dt * n as f64,
+        }
+    }
+
+    /// Whether the striker is off the surface after the last step, having been in contact
+    /// before.
+    pub fn separated(&self) -> bool {
+        !self.separations.is_empty() && self.steps.last().is_some_and(|s| s.pressure.is_empty())
     }
 
     /// Limits the march to `steps` steps, so that the history sum accumulates nothing for
@@ -582,11 +611,13 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         a + b
     }
 
-    /// Advances one step. Returns false when the striker has separated (free motion) and
-    /// the march is over.
+    /// Advances one step. Returns whether the striker is in contact at the step's end. Off
+    /// the surface the striker flies free (a free striker keeps its speed) and the march goes
+    /// on: the contact conditions are tried at every step, so a re-impact is found
+    /// (`docs/impact.md`, section 9).
     pub fn step(&mut self) -> Result<bool> {
         let n = self.steps.len() + 1;
-        let t = self.dt * n as f64;
+        let t = self.time(n);
         let dt = self.dt;
         let zero = T::of(0.0);
         let (h0, v0, k0) = match self.steps.last() {
@@ -630,8 +661,11 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         let hist = &data.hist;
         let model = self.edge_model(kin_b)?;
         let mut set = None;
-        let geometric =
-            matches!(self.law, EdgeLaw::Kinematic) || matches!(model, Some(m) if m.geometric);
+        let signorini = matches!(self.law, EdgeLaw::Signorini);
+        let geometric = !signorini || matches!(model, Some(m) if m.geometric);
+        // whether a branch below has settled the step's contact (else: the active set of
+        // whole cells, which can shrink the contact to nothing)
+        let mut settled = false;
         match (geometric, model) {
             (true, _) => {
                 let mut f_est = zero;
@@ -675,55 +709,69 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                         break;
                     }
                 }
+                // the kinematic law imposes its contact whatever the pressure's sign; under
+                // Signorini's a geometric (supersonic) edge stands only while every cell
+                // pushes
+                settled = !signorini
+                    || set
+                        .as_ref()
+                        .is_some_and(|((_, _, p, _), _): &(StepSet<T>, MidStep)| {
+                            p.iter().all(|v| *v >= 0.0)
+                        });
+                if !settled {
+                    set = None;
+                }
             }
             (false, Some(m)) if m.sub_cell && edge_cell(b_prev) >= 2 => {
-                set = Some((self.free_edge(&data, m, edge_cell(b_prev))?, true));
-            }
-            _ => {
-                // active set of whole cells 0..=k, started from the previous step's
-                let mut k = k0.min(self.kcap);
-                let mut tried = vec![false; self.kcap.min(imax) + 2];
-                loop {
-                    tried[k] = true;
-                    let (p, f) = self.solve_set(&data, k)?;
-                    if p[k] < 0.0 {
-                        if k == 0 {
-                            break; // no contact at all
-                        }
-                        if !tried[k - 1] {
-                            k -= 1;
-                            continue;
-                        }
-                    }
-                    let i = k + 1;
-                    if i <= imax.min(self.kcap) {
-                        // beyond the profile's extent the gap is open
-                        let gap = self.displacement(i, hist, &p)
-                            - data.target(i, f).unwrap_or(T::of(f64::NEG_INFINITY));
-                        if gap < 0.0 && !tried[i] {
-                            k = i;
-                            continue;
-                        }
-                    }
-                    let b = self.edge_fit(k, &p);
-                    set = Some(((k, b, p, f), true));
-                    break;
+                if let Some(s) = self.free_edge(&data, m, edge_cell(b_prev))? {
+                    set = Some((s, true));
+                    settled = true;
                 }
+            }
+            _ => {}
+        }
+        if !settled {
+            // active set of whole cells 0..=k, started from the previous step's: a cell is
+            // dropped while any pressure pulls (down to no contact at all), and added when
+            // the next point outside would interpenetrate
+            let mut k = k0.min(self.kcap);
+            let mut tried = vec![false; self.kcap.min(imax) + 2];
+            loop {
+                tried[k] = true;
+                let (p, f) = self.solve_set(&data, k)?;
+                if p.iter().any(|v| *v < 0.0) {
+                    if k == 0 {
+                        break; // no contact at all
+                    }
+                    k -= 1;
+                    continue;
+                }
+                let i = k + 1;
+                if i <= imax.min(self.kcap) {
+                    // beyond the profile's extent the gap is open
+                    let gap = self.displacement(i, hist, &p)
+                        - data.target(i, f).unwrap_or(T::of(f64::NEG_INFINITY));
+                    if gap < 0.0 && !tried[i] {
+                        k = i;
+                        continue;
+                    }
+                }
+                let b = self.edge_fit(k, &p);
+                set = Some(((k, b, p, f), true));
+                break;
             }
         }
-        let ((k, b, p, f), mid_step): (StepSet<T>, MidStep) = match set {
-            Some(s) => s,
-            None => {
-                // no contact: the striker has left the surface (or never touched it)
-                if let Motion::Free { .. } = self.motion {
-                    if v0 < 0.0 || n > 1 {
-                        self.separation = Some(t - dt);
-                        return Ok(false);
-                    }
-                }
-                ((0, zero, Vec::new(), zero), false)
-            }
-        };
+        let in_contact = set.is_some();
+        let was_in_contact = self.steps.last().is_some_and(|s| !s.pressure.is_empty());
+        if was_in_contact && !in_contact {
+            // the contact ended within the step: its pressures vanish from the middle of
+            // this step, the last step's stood for the middle of that one
+            self.separations.push(t - dt);
+        } else if in_contact && !was_in_contact && !self.separations.is_empty() {
+            self.reimpacts.push(t - dt);
+        }
+        let ((k, b, p, f), mid_step): (StepSet<T>, MidStep) =
+            set.unwrap_or(((0, zero, Vec::new(), zero), false));
         let (h, v) = match self.motion.driven_h(t) {
             Some(h) => {
                 let hp = self.motion.driven_h(t - dt).unwrap_or(zero);
@@ -778,7 +826,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             work,
             striker_work,
         });
-        Ok(true)
+        Ok(in_contact)
     }
 
     /// The mean of the profile over cell i (3-point Gauss-Legendre; cell 0 through its
@@ -997,8 +1045,15 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
     /// pressure, and its mean displacement leaves the model's gap over the part beyond the
     /// edge; the edge is the root of that condition in the cell (regula falsi), the cell
     /// moving outwards or inwards when the root lies beyond it. Returns (c, b, pressures,
-    /// force).
-    fn free_edge(&self, d: &StepData<T>, model: EdgeModel<T>, start: usize) -> Result<StepSet<T>> {
+    /// force), or `None` where the model cannot stand: the edge recedes into the first two
+    /// cells, or a cell's pressure would pull (the contact is then found among whole cells,
+    /// which can shrink it to nothing).
+    fn free_edge(
+        &self,
+        d: &StepData<T>,
+        model: EdgeModel<T>,
+        start: usize,
+    ) -> Result<Option<StepSet<T>>> {
         let dx = self.dx;
         let top = (d.fbar.len() - 1).min(self.kcap);
         // one factorisation per edge cell tried, shared by the iterations on theta
@@ -1030,6 +1085,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         let mut c = start.clamp(2, top.max(2));
         let mut tried = vec![false; top + 2];
         let (zero, one) = (T::of(0.0), T::of(1.0));
+        let pushes = |p: &[T]| p.iter().all(|v| *v >= 0.0);
         loop {
             tried[c] = true;
             let (r1, p1, f1) = residual(c, one)?;
@@ -1042,12 +1098,16 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 c -= 1;
                 continue;
             }
+            if r0 > 0.0 && c == 2 {
+                // the edge recedes into the first two cells
+                return Ok(None);
+            }
             let edge = |theta: T| (theta + (c as f64 - 0.5)) * dx;
             if r1 <= 0.0 {
-                return Ok((c, edge(one), p1, f1));
+                return Ok(pushes(&p1).then(|| (c, edge(one), p1, f1)));
             }
             if r0 >= 0.0 {
-                return Ok((c, edge(zero), p0, f0));
+                return Ok(pushes(&p0).then(|| (c, edge(zero), p0, f0)));
             }
             // regula falsi (Illinois) on theta in (0, 1)
             let (mut a, mut fa, mut b, mut fb) = (zero, r0, one, r1);
@@ -1079,7 +1139,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 }
             }
             let (p, f, theta) = best;
-            return Ok((c, edge(theta), p, f));
+            return Ok(pushes(&p).then(|| (c, edge(theta), p, f)));
         }
     }
 

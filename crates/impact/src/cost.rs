@@ -1,0 +1,93 @@
+//! What a run will cost, known before it is paid (`docs/impact.md`, section 10): the memory
+//! of its history and the work of its march, estimated from the grid and a bound of the
+//! contact's width, and the one limit a run is held to.
+//!
+//! The march keeps, per level, every step's pressures and displacements over the contact
+//! (about three vectors of the history's width W, a power of two above the widest contact in
+//! cells), the history sum's accumulators of pending targets and the kernels' transforms by
+//! level (4W complex numbers for each time lag up to the run's length), and the influence
+//! tables (one row per lag, as wide as the kernel's reach). All of it is proportional to
+//! N_t W, N_t the number of steps; [`BYTES_PER_CELL_STEP`] is the constant measured on the
+//! reference case (peak resident memory over N_t W on four grids).
+
+use crate::case::{Drive, ImpactCase};
+
+/// The default memory limit of a run, GiB.
+pub const DEFAULT_MEMORY_LIMIT_GIB: f64 = 4.0;
+
+/// Bytes of peak memory per step and cell of the history's width, over all that a level
+/// keeps (measured, `docs/impact.md`, section 10).
+pub const BYTES_PER_CELL_STEP: f64 = 200.0;
+
+/// Memory besides the history: the process, the tables' fixed part, the rules (bytes).
+pub const BASE_BYTES: f64 = 64.0 * 1024.0 * 1024.0;
+
+/// A run's estimated cost.
+#[derive(Clone, Copy, Debug)]
+pub struct CostEstimate {
+    /// Peak memory, bytes (every level's history is released before the next is built, so
+    /// the finest level's).
+    pub bytes: f64,
+    /// Time steps of the finest level (to the end, or to the cap when running to the
+    /// separation).
+    pub steps: usize,
+    /// The history's width W of the finest level, in cells (a bound: the widest contact the
+    /// striker's motion allows).
+    pub width: usize,
+    /// Space-time cells of all levels, sum of N_t W: the measure of the march's work (the
+    /// fast history sum costs about that times log^2 N_t log W).
+    pub cell_steps: f64,
+}
+
+impl CostEstimate {
+    /// The estimated peak memory in GiB.
+    pub fn gib(&self) -> f64 {
+        self.bytes / (1024.0 * 1024.0 * 1024.0)
+    }
+}
+
+impl ImpactCase {
+    /// The run's estimated cost ([`CostEstimate`]): the finest level's steps to the end
+    /// (or the cap), and its width from the widest contact the motion allows: the kinematic
+    /// edge of the largest penetration, V0 t for a free striker (it never moves in faster
+    /// than it started), V t or the table's largest h when driven, within the profile's
+    /// extent.
+    pub fn cost_estimate(&self) -> CostEstimate {
+        let h_max = match &self.drive {
+            Drive::Free { v0_over_c1, .. } => v0_over_c1 * self.end,
+            Drive::Speed(v) => v * self.end,
+            Drive::Table(t) => t.iter().map(|p| p.1).fold(0.0, f64::max),
+        };
+        let b = self
+            .profile
+            .kinematic_edge::<f64>(h_max.max(0.0))
+            .unwrap_or(f64::INFINITY)
+            .min(self.profile.extent());
+        let mut bytes = 0.0f64;
+        let mut cell_steps = 0.0;
+        let (mut steps0, mut width0) = (0, 0);
+        for level in 0..self.levels.max(1) {
+            let dx = self.dx * (1u64 << level) as f64;
+            let steps = (self.end / (self.kappa * dx)).ceil().max(1.0);
+            let cells = (b / dx).ceil().max(0.0) + 4.0;
+            let width = if cells.is_finite() && cells < 1e12 {
+                (cells as usize).next_power_of_two().max(8)
+            } else {
+                usize::MAX / 2
+            };
+            let w = width as f64;
+            bytes = bytes.max(BASE_BYTES + BYTES_PER_CELL_STEP * steps * w);
+            cell_steps += steps * w;
+            if level == 0 {
+                steps0 = steps as usize;
+                width0 = width;
+            }
+        }
+        CostEstimate {
+            bytes,
+            steps: steps0,
+            width: width0,
+            cell_steps,
+        }
+    }
+}
