@@ -57,7 +57,7 @@ pub fn run(a: &EdgeArgs, version: &str) -> R<Value> {
             .parse()
             .map_err(|_| format!("invalid --speed-over-c1 entry '{item}': not a number"))?;
         let e = hp.edge_behaviour(d, law).map_err(|e| e.to_string())?;
-        records.push(json!({
+        let mut rec = json!({
             "speed_over_c1": e.speed_over_c1,
             "range": e.range.name(),
             "exponents": e.solutions.iter().map(|s| s.lambda).collect::<Vec<_>>(),
@@ -66,8 +66,23 @@ pub fn run(a: &EdgeArgs, version: &str) -> R<Value> {
             "selected": e.selected,
             "law": law.name(),
             "slope_symbol": [e.slope_symbol.0, e.slope_symbol.1],
-            "edge_pressure_per_profile_slope": e.jump_per_slope,
-        }));
+        });
+        // the edge's pressure is a finite jump (per unit profile slope) only above c1; below,
+        // the pressure at the edge is zero or singular: declared unavailable with the reason
+        if let Value::Object(o) = &mut rec {
+            match e.jump_per_slope {
+                Some(j) => {
+                    o.insert("edge_pressure_per_profile_slope".into(), json!(j));
+                }
+                None => {
+                    o.insert(
+                        "unavailable".into(),
+                        json!({"edge_pressure_per_profile_slope": "only a supersonic edge (speed above c1) has a finite edge pressure proportional to the profile's slope; below c1 the pressure at the edge is zero or singular (the selected exponent)"}),
+                    );
+                }
+            }
+        }
+        records.push(rec);
     }
     Ok(json!({
         "version": version,

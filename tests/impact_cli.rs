@@ -710,3 +710,253 @@ fn run_digits_prints_the_double_double_march() {
         assert!(err.contains(word), "{err}");
     }
 }
+
+/// Every null, anywhere in a report, is an error: values and estimates that cannot be formed
+/// are absent, with their reason under `unavailable`.
+fn assert_no_null(v: &Value, path: &str) {
+    match v {
+        Value::Null => panic!("{path} is null"),
+        Value::Number(_) => assert!(num(v).is_finite(), "{path} = {v}"),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .for_each(|(i, x)| assert_no_null(x, &format!("{path}[{i}]"))),
+        Value::Object(o) => o
+            .iter()
+            .for_each(|(k, x)| assert_no_null(x, &format!("{path}.{k}"))),
+        _ => {}
+    }
+}
+
+const REFERENCE_40: [&str; 14] = [
+    "run",
+    "--c1",
+    "1870.83",
+    "--c2",
+    "1000",
+    "--profile",
+    "parabola:R=1",
+    "--mass-ratio",
+    "10",
+    "--v0-over-c1",
+    "0.01",
+    "--end",
+    "c1t/R=40",
+    "--json",
+];
+
+/// The README's reference case past its rebound: it separates, the force never pulls, the
+/// rebound and the energy audit are reported with their estimates, the inputs are echoed,
+/// and no value is null; the CSV carries the same as `#` lines and the energy defect column.
+#[test]
+fn run_past_the_rebound_reports_the_separation() {
+    let v = json(&REFERENCE_40);
+    assert_no_null(&v, "run");
+    let f = v["force_over_rho_c1sq_R"].as_array().unwrap();
+    let peak = f.iter().map(num).fold(0.0, f64::max);
+    assert!(f.iter().all(|x| num(x) >= -1e-12 * peak));
+    let sep = num(&v["separation_c1t_over_R"]["value"]);
+    assert!(sep > 15.0 && sep < 20.0, "{sep}");
+    let e = num(&v["restitution"]);
+    assert!(e > 0.5 && e < 0.7, "{e}");
+    assert!(num(&v["error_estimate"]["restitution"]) < 5e-4);
+    let closure = e * e + num(&v["energy_to_half_plane"]) - 1.0;
+    assert!(closure.abs() < 1e-3, "{closure}");
+    assert_eq!(v["energy_audit"]["within_bound"], true);
+    assert_eq!(num(&v["mass_ratio"]), 10.0);
+    assert_eq!(num(&v["v0_over_c1"]), 0.01);
+    assert!(v["peak_force"]["force_over_rho_c1sq_R"].is_number());
+    let t = v["c1t_over_R"].as_array().unwrap();
+    assert_eq!(num(t.last().unwrap()), 40.0);
+    let d = v["energy_defect"].as_array().unwrap();
+    assert_eq!(d.len(), t.len());
+    assert_eq!(
+        v["error_estimate"]["energy_defect"]
+            .as_array()
+            .unwrap()
+            .len(),
+        t.len()
+    );
+    // after the separation the striker flies free at its rebound speed
+    let hdot = v["hdot_over_v0"].as_array().unwrap();
+    assert_eq!(num(hdot.last().unwrap()), -e);
+    // the CSV
+    let csv_args: Vec<&str> = REFERENCE_40
+        .iter()
+        .copied()
+        .filter(|a| *a != "--json")
+        .collect();
+    let (code, out, _) = impact(&csv_args);
+    assert_eq!(code, 0);
+    assert!(out.contains("# restitution: "), "{out:.400}");
+    assert!(out.contains("# separation_c1t_over_R: "));
+    let header = out.lines().find(|l| l.starts_with("c1t_over_R")).unwrap();
+    assert!(header.contains(",energy_defect,") && header.contains("err_energy_defect"));
+}
+
+/// Before the separation, on one level: the rebound, the estimates and the orders are declared
+/// unavailable with their reasons, and the largest force is not called a peak while it rises.
+#[test]
+fn run_declares_what_it_cannot_form() {
+    let v = json(&[
+        "run",
+        "--poisson",
+        "0.3",
+        "--profile",
+        "parabola:R=1",
+        "--mass-ratio",
+        "10",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "c1t/R=2",
+        "--dx",
+        "0.01",
+        "--levels",
+        "1",
+        "--json",
+    ]);
+    assert_no_null(&v, "run");
+    let why = v["unavailable"].as_object().unwrap();
+    for key in [
+        "restitution",
+        "separation_c1t_over_R",
+        "error_estimate",
+        "peak_force",
+    ] {
+        assert!(why[key].as_str().is_some_and(|r| !r.is_empty()), "{key}");
+    }
+    assert!(v.get("restitution").is_none() && v.get("peak_force").is_none());
+    assert!(v["largest_force"]["force_over_rho_c1sq_R"].is_number());
+    assert!(v["error_estimate"].as_object().unwrap().is_empty());
+    // the CSV says the same in # lines
+    let (code, out, _) = impact(&[
+        "run",
+        "--poisson",
+        "0.3",
+        "--profile",
+        "parabola:R=1",
+        "--mass-ratio",
+        "10",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "c1t/R=2",
+        "--dx",
+        "0.01",
+        "--levels",
+        "1",
+    ]);
+    assert_eq!(code, 0);
+    assert!(out.contains("# unavailable: restitution: "));
+}
+
+/// `--end separation`, the refusals of the time and the memory, and a driven run's time
+/// levels: h = V t at every reported time, the last at `--end` exactly.
+#[test]
+fn run_to_separation_and_refusals() {
+    let v = json(&[
+        "run",
+        "--poisson",
+        "0.3",
+        "--profile",
+        "parabola:R=1",
+        "--mass-ratio",
+        "1",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "separation",
+        "--dx",
+        "0.01",
+        "--json",
+    ]);
+    let sep = num(&v["separation_c1t_over_R"]["value"]);
+    let t = v["c1t_over_R"].as_array().unwrap();
+    let last = num(t.last().unwrap());
+    assert!(last > sep && last < sep + 0.2, "{sep} {last}");
+    assert_eq!(v["end"]["separation"], true);
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        // a pressure profile past the end
+        (
+            vec![
+                "--mass-ratio",
+                "10",
+                "--v0-over-c1",
+                "0.01",
+                "--end",
+                "c1t/R=1",
+                "--pressure-at",
+                "c1t/R=1.5",
+            ],
+            "--pressure-at",
+        ),
+        // to the separation, a driven striker
+        (
+            vec!["--driven", "speed:V_over_c1=0.01", "--end", "separation"],
+            "separation",
+        ),
+        // a grid whose history would not fit the memory limit
+        (
+            vec![
+                "--mass-ratio",
+                "10",
+                "--v0-over-c1",
+                "0.01",
+                "--end",
+                "c1t/R=200",
+                "--dx",
+                "0.0005",
+            ],
+            "GiB",
+        ),
+        // a light punch whose deceleration the step does not resolve
+        (
+            vec![
+                "--mass-ratio",
+                "0.00372818",
+                "--v0-over-c1",
+                "0.1",
+                "--end",
+                "c1t/R=1",
+            ],
+            "deceleration",
+        ),
+    ];
+    for (extra, word) in cases {
+        let mut args = vec!["run", "--poisson", "0.3"];
+        args.extend(if word == "deceleration" {
+            ["--profile", "flat:a=1.0"]
+        } else {
+            ["--profile", "parabola:R=1"]
+        });
+        args.extend(extra);
+        let (code, out, err) = impact(&args);
+        assert_eq!(code, 2, "{args:?}: {out:.200}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(word), "{word}: {err}");
+    }
+    // the driven punch of the README: h = V t at every reported time, the end exactly
+    let v = json(&[
+        "run",
+        "--poisson",
+        "0.3",
+        "--profile",
+        "flat:a=1",
+        "--driven",
+        "speed:V_over_c1=0.01",
+        "--end",
+        "c1t/R=1",
+        "--json",
+    ]);
+    let t = v["c1t_over_R"].as_array().unwrap();
+    let h = v["h_over_R"].as_array().unwrap();
+    assert_eq!(num(t.last().unwrap()), 1.0);
+    for (t, h) in t.iter().zip(h) {
+        assert!(
+            (num(h) - 0.01 * num(t)).abs() <= 1e-14 * 0.01 * num(t),
+            "{t} {h}"
+        );
+    }
+    assert_eq!(v["unavailable"]["energy_defect"].as_str().is_some(), true);
+}

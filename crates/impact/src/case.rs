@@ -62,6 +62,11 @@ pub enum Drive {
     Table(Vec<(f64, f64)>),
 }
 
+/// The largest r = dt rho c1 b/m0 of the finest step admitted for a free striker
+/// ([`ImpactCase::check_stiffness`]): above 1 the trapezoidal factor (1 - r)/(1 + r) of the
+/// striker's relaxation changes sign.
+pub const STIFF_RATIO: f64 = 1.0;
+
 /// Where a march stands ([`ImpactCase::solve_reporting`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Progress {
@@ -105,6 +110,9 @@ pub struct ImpactCase {
     pub end: f64,
     /// Where the run stops (default [`Stop::AtEnd`]).
     pub stop: Stop,
+    /// The memory limit of the march in bytes (`None`: none): a level whose contact widens
+    /// its history beyond it ends the solve with [`ImpactError::Grid`] (`crate::cost`).
+    pub memory_limit: Option<f64>,
     /// Cell width dx/R of the finest grid.
     pub dx: f64,
     /// kappa = c1 dt/dx (>= 2).
@@ -129,6 +137,7 @@ impl ImpactCase {
             law,
             end,
             stop: Stop::AtEnd,
+            memory_limit: None,
             dx: 0.01,
             kappa: 2.0,
             levels: 3,
@@ -299,6 +308,31 @@ impl ImpactCase {
         }
     }
 
+    /// Refuses a free striker whose deceleration the finest time step does not resolve
+    /// (`docs/impact.md`, section 9): against the plane-wave impedance rho c1 2b of its
+    /// widest contact, its speed relaxes with the time m0/(2 rho c1 b), and the step's
+    /// constant force advances it by the trapezoidal factor (1 - r)/(1 + r),
+    /// r = dt rho c1 b/m0, which turns negative, a spurious bounce, for r > 1.
+    fn check_stiffness<T: Scalar>(&self, fine: &Run<T>) -> Result<()> {
+        let Drive::Free { mass_ratio, .. } = self.drive else {
+            return Ok(());
+        };
+        let b = fine.steps.iter().map(|s| s.b.to_f64()).fold(0.0, f64::max);
+        let dt = fine.dt.to_f64();
+        let r = dt * b / mass_ratio;
+        if r > STIFF_RATIO {
+            return Err(ImpactError::Grid {
+                name: "dx",
+                reason: format!(
+                    "the striker's deceleration time m0/(2 rho c1 b) = {:.3e} R/c1 is shorter than half the time step c1 dt/R = {dt:.3e}, so the step's constant force would bounce it back: lower --dx or --kappa to c1 dt/R < {:.3e}, or raise --mass-ratio",
+                    mass_ratio / (2.0 * b),
+                    mass_ratio / b
+                ),
+            });
+        }
+        Ok(())
+    }
+
     /// Solves the case on `levels` grids (dx, 2 dx, ...) in f64. `progress` is called with
     /// the fraction done.
     pub fn solve(&self, progress: impl FnMut(f64)) -> Result<Solution> {
@@ -446,7 +480,8 @@ impl ImpactCase {
                 dt,
             )
             .with_edge_gap_scale(self.edge_gap_scale(m64).map(T::of))
-            .with_horizon(horizon);
+            .with_horizon(horizon)
+            .with_memory_limit(self.memory_limit, horizon);
             if let Some((n, end)) = target {
                 march = march.with_end(n, end);
             }
@@ -522,6 +557,7 @@ impl ImpactCase {
             });
         }
         let runs: Vec<Run<T>> = runs.into_iter().flatten().collect();
+        self.check_stiffness(&runs[0])?;
         report(Progress {
             fraction: 1.0,
             level: 0,
@@ -1120,8 +1156,18 @@ impl<T: Scalar> Solution<T> {
                 err: kinetic.and_then(|k| k.err),
             };
             let deformable = !matches!(self.case.striker, Striker::Rigid);
+            // under Signorini's law the continuum's defect is exactly 0, so the defect is its
+            // own error and its estimate is never below it (`docs/impact.md`, section 9)
+            let defect = energy.map(|_| {
+                let mut d = val(6, one);
+                if self.case.law == EdgeLaw::Signorini {
+                    let own = d.value.to_f64().abs();
+                    d.err = Some(d.err.map_or(own, |e| e.max(own)));
+                }
+                d
+            });
             rows.push(HistoryRow {
-                energy_defect: energy.map(|_| val(6, one)),
+                energy_defect: defect,
                 striker_deformation: deformable.then(|| val(4, one)),
                 striker_energy: deformable.then(|| val(5, m2)),
                 t,

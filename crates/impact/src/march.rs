@@ -111,6 +111,11 @@ pub struct March<'a, T: Scalar + CachedRules = f64> {
     /// The exact end time and its step: the last step's time is this value, not n dt rounded
     /// (the reported times end at the requested end exactly).
     end: Option<(usize, T)>,
+    /// The memory limit (bytes) and the steps the history is kept for: a march whose history
+    /// grows beyond the limit ends with an error (`crate::cost`).
+    memory: Option<(f64, usize)>,
+    /// The widest history width checked against the limit so far.
+    checked_width: usize,
     /// The factor of the edge model's gap coefficient for the pair of bodies (1 for a
     /// rigid striker); `None` when the local model does not apply (a striker of other wave
     /// speeds or a shell): the edge is then captured cell by cell.
@@ -122,6 +127,9 @@ pub struct March<'a, T: Scalar + CachedRules = f64> {
     /// with).
     systems: std::cell::RefCell<SystemCache<T>>,
 }
+
+/// Bytes in a GiB.
+const GIB: f64 = 1024.0 * 1024.0 * 1024.0;
 
 /// Source cells at least this many cells from the receiving cell enter the shape defect by
 /// their moments (`EdgeModel::shape_defect_with`).
@@ -471,7 +479,16 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             separations: Vec::new(),
             reimpacts: Vec::new(),
             end: None,
+            memory: None,
+            checked_width: 0,
         }
+    }
+
+    /// Limits the memory of the march's history to `bytes` over `steps` steps
+    /// (`crate::cost::BYTES_PER_CELL_STEP` per step and cell of the history's width).
+    pub(crate) fn with_memory_limit(mut self, bytes: Option<f64>, steps: usize) -> Self {
+        self.memory = bytes.map(|b| (b, steps));
+        self
     }
 
     /// Ends the march's time levels at `end` exactly after `steps` steps (the step's time
@@ -651,6 +668,26 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             .max(kin_k(kin_b) + 3)
             .max(edge_cell(b_prev) + 3)
             .min(self.kcap + 2);
+        if let Some((limit, _)) = self.memory {
+            // the memory the history holds at this step, for its widest contact so far
+            let width = (imax + 1)
+                .next_power_of_two()
+                .max(8)
+                .max(self.checked_width);
+            self.checked_width = width;
+            let bytes = crate::cost::BASE_BYTES
+                + crate::cost::BYTES_PER_CELL_STEP * n as f64 * width as f64;
+            if bytes > limit {
+                return Err(ImpactError::Grid {
+                    name: "dx",
+                    reason: format!(
+                        "at c1 t/R = {:.4} (step {n}, the contact over {imax} cells) the history holds about {:.1} GiB, the memory limit (raise --dx, shorten --end, or pass --force)",
+                        t.to_f64(),
+                        bytes / GIB
+                    ),
+                });
+            }
+        }
         let data = StepData {
             hist: self.history(n, imax)?,
             fbar: (0..=imax).map(|i| self.profile_mean(i)).collect(),
@@ -731,34 +768,8 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             _ => {}
         }
         if !settled {
-            // active set of whole cells 0..=k, started from the previous step's: a cell is
-            // dropped while any pressure pulls (down to no contact at all), and added when
-            // the next point outside would interpenetrate
-            let mut k = k0.min(self.kcap);
-            let mut tried = vec![false; self.kcap.min(imax) + 2];
-            loop {
-                tried[k] = true;
-                let (p, f) = self.solve_set(&data, k)?;
-                if p.iter().any(|v| *v < 0.0) {
-                    if k == 0 {
-                        break; // no contact at all
-                    }
-                    k -= 1;
-                    continue;
-                }
-                let i = k + 1;
-                if i <= imax.min(self.kcap) {
-                    // beyond the profile's extent the gap is open
-                    let gap = self.displacement(i, hist, &p)
-                        - data.target(i, f).unwrap_or(T::of(f64::NEG_INFINITY));
-                    if gap < 0.0 && !tried[i] {
-                        k = i;
-                        continue;
-                    }
-                }
-                let b = self.edge_fit(k, &p);
-                set = Some(((k, b, p, f), true));
-                break;
+            if let Some(found) = self.whole_cells(&data, k0.min(self.kcap), imax)? {
+                set = Some((found, true));
             }
         }
         let in_contact = set.is_some();
@@ -827,6 +838,97 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             striker_work,
         });
         Ok(in_contact)
+    }
+
+    /// The contact among whole cells (`docs/impact.md`, section 9): the linear
+    /// complementarity problem of the step's cells 0..=min(imax, kcap), p >= 0 on the contact
+    /// cells, mean gap >= 0 on the others, one of the two zero on each, solved by Murty's
+    /// least-index principal pivoting from the previous step's contact 0..=k0: the first cell
+    /// that pulls or interpenetrates changes side, until none does. The contact need not be
+    /// one interval (the middle of a flat punch may lift off while its edges push). Returns
+    /// (last contact cell, edge, pressures with zeros off the contact, force), or `None`
+    /// without contact.
+    fn whole_cells(&self, d: &StepData<T>, k0: usize, imax: usize) -> Result<Option<StepSet<T>>> {
+        let top = imax.min(self.kcap).min(d.fbar.len() - 1);
+        let zero = T::of(0.0);
+        let mut inside = vec![false; top + 1];
+        for c in inside.iter_mut().take(k0.min(top) + 1) {
+            *c = true;
+        }
+        // Murty's rule ends for a P-matrix; the bound only guards against a matrix that is not
+        let limit = 8 * (top + 1) + 16;
+        for _ in 0..limit {
+            let cells: Vec<usize> = (0..=top).filter(|&i| inside[i]).collect();
+            let (p, f) = match cells.last() {
+                Some(_) => self.solve_cells(d, &cells)?,
+                None => (Vec::new(), zero),
+            };
+            // the first cell on the wrong side
+            let mut flip = None;
+            for i in 0..=top {
+                let wrong = if inside[i] {
+                    p[i] < 0.0
+                } else {
+                    match d.target(i, f) {
+                        Ok(target) => self.displacement(i, &d.hist, &p) - target < 0.0,
+                        // beyond the profile's extent the gap is open
+                        Err(_) => false,
+                    }
+                };
+                if wrong {
+                    flip = Some(i);
+                    break;
+                }
+            }
+            match flip {
+                Some(i) => inside[i] = !inside[i],
+                None => {
+                    return Ok(cells.last().map(|&k| {
+                        let b = self.edge_fit(k, &p);
+                        (k, b, p, f)
+                    }))
+                }
+            }
+        }
+        Err(ImpactError::Step {
+            time: format!("{:.6}", d.t.to_f64()),
+            reason: "the contact among whole cells did not settle (least-index pivoting)".into(),
+        })
+    }
+
+    /// Solves the step with the contact cells `cells` (ascending, not empty): the pressures
+    /// over 0..=max (zeros off the contact) and the force. A contact 0..=k takes the kept
+    /// factorisation of [`March::solve_set`]; any other is factorised here.
+    fn solve_cells(&self, d: &StepData<T>, cells: &[usize]) -> Result<(Vec<T>, T)> {
+        let k = cells[cells.len() - 1];
+        if cells.len() == k + 1 {
+            return self.solve_set(d, k);
+        }
+        let zero = T::of(0.0);
+        let w: Vec<T> = cells.iter().map(|&j| self.weight(j)).collect();
+        // the band of the cells' local indices is no wider than that of the cells
+        let factor = Factor::new(
+            cells.len(),
+            self.reach(),
+            |i, j| self.current(cells[i], cells[j]),
+            d.coupling,
+            w,
+        )
+        .ok_or_else(|| singular_system(d.t))?;
+        let mut r = Vec::with_capacity(cells.len());
+        for &i in cells {
+            r.push(d.target(i, zero)? - d.hist.0[i] - d.hist.1.get(i).copied().unwrap_or(zero));
+        }
+        let pc = factor.solve(&r).ok_or_else(|| singular_system(d.t))?;
+        let mut p = vec![zero; k + 1];
+        for (&i, &v) in cells.iter().zip(&pc) {
+            p[i] = v;
+        }
+        let force = p
+            .iter()
+            .enumerate()
+            .fold(zero, |s, (j, &v)| s + self.weight(j) * v);
+        Ok((p, force))
     }
 
     /// The mean of the profile over cell i (3-point Gauss-Legendre; cell 0 through its
