@@ -875,6 +875,9 @@ fn impact_history_and_pressure_match_the_library() {
     let d = quick_all();
     let hist = Csv::read(&d.join("impact_history.csv"));
     let mut forces = Vec::new();
+    // the finest grid's step (kappa 2, dx 0.02: about 0.04, the end a whole number of the
+    // coarsest steps)
+    let mut dt = 0.04;
     for law in [EdgeLaw::Signorini, EdgeLaw::Kinematic] {
         let mut case = ImpactCase::reference(law);
         case.dx = 0.02;
@@ -900,6 +903,7 @@ fn impact_history_and_pressure_match_the_library() {
             // the finest grid's steps' forces around each report time (the history reports
             // their local fit over the edge's crossings, `docs/impact.md`, section 4)
             let run = &sol.runs[0];
+            dt = run.dt;
             let m2 = sol.m * sol.m;
             forces = lib
                 .iter()
@@ -924,7 +928,6 @@ fn impact_history_and_pressure_match_the_library() {
     }
     // a step's pressures stand for the middle of the step: the force at a step's end is
     // the mean of the two steps around it
-    let dt = 0.04; // kappa 2, dx 0.02
     let mut checked = 0;
     for (t, f) in forces {
         let key = |t: f64| (t * 1e6).round() as i64;

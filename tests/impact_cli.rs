@@ -630,9 +630,10 @@ fn run_deformable_strikers() {
 #[test]
 fn run_digits_prints_the_double_double_march() {
     let mut args = RUN_BASE.to_vec();
+    // the end a whole number of the coarsest steps, c1 dt/R = 4 kappa dx = 0.16
     args.extend([
         "--end",
-        "c1t/R=1",
+        "c1t/R=0.96",
         "--dx",
         "0.02",
         "--pressure-at",
@@ -779,7 +780,8 @@ fn run_past_the_rebound_reports_the_separation() {
     );
     // after the separation the striker flies free at its rebound speed
     let hdot = v["hdot_over_v0"].as_array().unwrap();
-    assert_eq!(num(hdot.last().unwrap()), -e);
+    let last = num(hdot.last().unwrap());
+    assert!((last + e).abs() <= 1e-14 * e, "{last} against {e}");
     // the CSV
     let csv_args: Vec<&str> = REFERENCE_40
         .iter()
@@ -958,5 +960,5 @@ fn run_to_separation_and_refusals() {
             "{t} {h}"
         );
     }
-    assert_eq!(v["unavailable"]["energy_defect"].as_str().is_some(), true);
+    assert!(v["unavailable"]["energy_defect"].as_str().is_some());
 }

@@ -197,8 +197,8 @@ pub fn impact_pressure(ctx: &Ctx) -> Result<Summary> {
     ctx.tick();
     let m2 = (C2 / C1).powi(2);
     let run = &sol.runs[0];
-    // at most 250 time rows
-    let every = run.steps.len().div_ceil(250).max(1);
+    // at most 300 time rows
+    let every = run.steps.len().div_ceil(300).max(1);
     let rows: Vec<&impact::march::StepState> =
         run.steps.iter().skip(every - 1).step_by(every).collect();
     let pmax = rows
@@ -213,7 +213,7 @@ pub fn impact_pressure(ctx: &Ctx) -> Result<Summary> {
             Column {
                 name: "c1t_over_R",
                 meaning:
-                    "time c1 t/R (every step of the finest grid, thinned to at most 250 times)",
+                    "time c1 t/R (every step of the finest grid, thinned to at most 300 times)",
             },
             Column {
                 name: "x_over_R",
