@@ -63,7 +63,7 @@ pub enum Drive {
 }
 
 /// The largest r = dt rho c1 b/m0 of the finest step admitted for a free striker
-/// ([`ImpactCase::check_stiffness`]): above 1 the trapezoidal factor (1 - r)/(1 + r) of the
+/// (`ImpactCase::check_stiffness`, a refusal of the solve): above 1 the trapezoidal factor (1 - r)/(1 + r) of the
 /// striker's relaxation changes sign.
 pub const STIFF_RATIO: f64 = 1.0;
 
