@@ -125,8 +125,13 @@ impl<T: Real> OmegaFn<T> {
     /// are formed from tan(pi Omega) = num/den directly (den/hypot, num/hypot), so cos(pi Omega)
     /// keeps full relative accuracy when Omega is close to 1/2 (large friction).
     pub fn omega_cos_sin(&self, xi: &T) -> (T, T, T) {
-        let (om, _, cos, sin) = self.omega_gap_cos_sin(xi);
-        (om, cos, sin)
+        if self.is_zero() {
+            return (xi.zero(), xi.one(), xi.zero());
+        }
+        let (num, den) = self.tan_parts(xi);
+        let h = num.clone().hypot(&den);
+        let om = num.clone().atan2(&den) / xi.pi();
+        (om, den / &h, num / h)
     }
 
     /// (Omega(xi), 1/2 + Omega(xi), cos(pi Omega), sin(pi Omega)): [`Self::omega_cos_sin`]
