@@ -27,7 +27,8 @@ use wedge::{
 
 pub use report::{
     print_floor, Entry, FieldReport, Item, Quantity, Selection, SolveReport, StressReport,
-    ADMISSIBILITY_KEYS, ALWAYS_KEYS, ESTIMATED_KEYS, FIELD_KEYS, NOT_FOR_CURVE_ROWS, SOLVE_KEYS,
+    ADMISSIBILITY_KEYS, ADMISSIBILITY_NOT_COMPUTED, ALWAYS_KEYS, ESTIMATED_KEYS, FIELD_KEYS,
+    SIGN_KEYS, SOLVE_KEYS,
 };
 
 /// Library version, written into every output header.
@@ -231,10 +232,13 @@ pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
                 WedgeError::Complex(complexfn::Error::NonFinite { .. })
                     | WedgeError::NotFinite { .. }
             );
+            let undetermined = matches!(&other, WedgeError::Undetermined { .. });
             let inputs = describe(input, speed);
             WedgeError::AtCase {
                 inputs: if overflow && input.digits.is_none() {
                     format!("{inputs} (the f64 range is exceeded here; try --digits)")
+                } else if undetermined && input.digits.is_none() {
+                    format!("{inputs} (try --digits)")
                 } else {
                     inputs
                 },
@@ -254,12 +258,34 @@ pub fn at_case(input: &CaseInput, speed: &Speed, e: WedgeError) -> WedgeError {
 /// round-off floors), never optimistic without a second solve (`docs/estimates.md`).
 /// When the indenter speed is given, the inverse solve's uncertainty in alpha is carried
 /// into every quantity through its slope (two f64 rows at nearby alpha).
+///
+/// The given speed (alpha or V) is echoed as its decimal text, whatever the digits printed.
 pub fn solve(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveReport> {
     let mut r = solve_unlabelled(input, speed, sel).map_err(|e| at_case(input, speed, e))?;
-    if let Speed::Indenter(_) = speed {
-        inverse_estimates(input, &mut r, sel).map_err(|e| at_case(input, speed, e))?;
+    match speed {
+        Speed::Indenter(v) => {
+            inverse_estimates(input, &mut r, sel).map_err(|e| at_case(input, speed, e))?;
+            r.echo_speed(v);
+        }
+        Speed::Alpha(a) => r.echo_alpha(a),
     }
     Ok(r)
+}
+
+/// The sampled admissibility checks of `input` at the contact speed `alpha` made on its f64
+/// twin (they are sign checks); a twin that f64 cannot solve is the checks' failure, with its
+/// reason.
+fn twin_admissibility(input: &CaseInput, alpha: &Speed) -> Result<wedge::Admissibility> {
+    let f64_input = CaseInput {
+        digits: None,
+        ..input.clone()
+    };
+    build(&f64_input, alpha, &0.0_f64)
+        .and_then(|twin| twin.admissibility())
+        .map_err(|e| WedgeError::AtCase {
+            inputs: "made on the case in f64".into(),
+            error: Box::new(e),
+        })
 }
 
 fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result<SolveReport> {
@@ -279,8 +305,7 @@ fn solve_unlabelled(input: &CaseInput, speed: &Speed, sel: &Selection) -> Result
     if full {
         // the admissibility checks are sign checks: made on the f64 twin of the case
         let alpha = p * input.material.c1().value();
-        let twin = build(input, &Speed::Alpha(alpha.into()), &0.0_f64)?;
-        r.set_admissibility(twin.admissibility());
+        r.set_admissibility(twin_admissibility(input, &Speed::Alpha(alpha.into())));
     }
     Ok(r)
 }
@@ -312,7 +337,7 @@ fn inverse_estimates(input: &CaseInput, r: &mut SolveReport, sel: &Selection) ->
         digits: None,
         ..input.clone()
     };
-    let row = |a: f64| curve_row_unlabelled(&f64_input, &a.into(), sel);
+    let row = |a: f64| curve_row_unlabelled(&f64_input, &a.into(), sel, false);
     let (lo, hi) = (row(alpha * (1.0 - h))?, row(alpha * (1.0 + h))?);
     let slope = |k: &str| -> Option<f64> {
         let (a, b) = (lo.quantity(k)?.value(), hi.quantity(k)?.value());
@@ -340,19 +365,34 @@ fn inverse_estimates(input: &CaseInput, r: &mut SolveReport, sel: &Selection) ->
 }
 
 /// One row of an alpha-V curve: the quantities `sel` wants of the `solve` report at the
-/// requested precision (one solve, the estimates the solve's own), without the
-/// admissibility checks ([`NOT_FOR_CURVE_ROWS`]).
+/// requested precision (one solve, the estimates the solve's own), the admissibility flags
+/// among them as in [`solve`] (the sampled ones on the f64 twin above f64), and alpha echoed
+/// as given.
 pub fn curve_row(input: &CaseInput, alpha: &wedge::Param, sel: &Selection) -> Result<SolveReport> {
-    curve_row_unlabelled(input, alpha, sel)
-        .map_err(|e| at_case(input, &Speed::Alpha(alpha.clone()), e))
+    let speed = Speed::Alpha(alpha.clone());
+    let checks = sel.wants_admissibility();
+    let f64_path = input.digits.is_none();
+    let mut r = curve_row_unlabelled(input, alpha, sel, checks && f64_path)
+        .map_err(|e| at_case(input, &speed, e))?;
+    if checks && !f64_path {
+        r.set_admissibility(twin_admissibility(input, &speed));
+    }
+    r.echo_alpha(alpha);
+    Ok(r)
 }
 
-struct Row<'a>(&'a CaseInput, Speed, &'a Selection);
+/// A row at the working precision, with the sampled admissibility checks on the same solved
+/// case when the last field is set.
+struct Row<'a>(&'a CaseInput, Speed, &'a Selection, bool);
 
 impl Job<SolveReport> for Row<'_> {
     fn run<T: CachedRules>(&self, like: &T) -> Result<SolveReport> {
         let s = build(self.0, &self.1, like)?;
-        SolveReport::selected(&s, self.0, self.0.out_digits(), self.2)
+        let mut r = SolveReport::selected(&s, self.0, self.0.out_digits(), self.2)?;
+        if self.3 {
+            r.set_admissibility(s.admissibility());
+        }
+        Ok(r)
     }
 }
 
@@ -360,8 +400,9 @@ fn curve_row_unlabelled(
     input: &CaseInput,
     alpha: &wedge::Param,
     sel: &Selection,
+    checks: bool,
 ) -> Result<SolveReport> {
-    at_precision(input, &Row(input, Speed::Alpha(alpha.clone()), sel))
+    at_precision(input, &Row(input, Speed::Alpha(alpha.clone()), sel, checks))
 }
 
 struct Stress<'a>(&'a CaseInput, &'a Speed, &'a [wedge::Param]);

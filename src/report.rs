@@ -173,6 +173,8 @@ pub const SOLVE_KEYS: &[&str] = &[
     "slip_direction_ok",
     "contact_compressive",
     "no_interpenetration",
+    "speed_positive",
+    "force_compressive",
     "error_estimate",
     "digits",
 ];
@@ -212,12 +214,17 @@ pub const ALWAYS_KEYS: &[&str] = &[
     "digits",
 ];
 
-/// The admissibility flags (sign checks that sample the contact and its outside).
+/// The admissibility flags that sample the contact and its outside (sign checks made on the
+/// f64 twin of a case above f64, [`wedge::Admissibility`]).
 pub const ADMISSIBILITY_KEYS: &[&str] = &[
     "slip_direction_ok",
     "contact_compressive",
     "no_interpenetration",
 ];
+
+/// The admissibility flags read off the solve itself, at the working precision: V > 0 and a
+/// compressive normal force P > 0, each beyond its own estimate.
+pub const SIGN_KEYS: &[&str] = &["speed_positive", "force_compressive"];
 
 /// Which quantities a report computes: every key of [`SOLVE_KEYS`] (the default), or the
 /// [`ALWAYS_KEYS`] and the keys selected. What is left out is not computed (each quantity is
@@ -289,9 +296,10 @@ impl Selection {
     }
 }
 
-/// The reason given for the admissibility checks of curve rows.
-pub const NOT_FOR_CURVE_ROWS: &str =
-    "not computed for curve rows (the sign checks of `solve` sample the contact)";
+/// The reason given for the sampled admissibility checks of a report built without them
+/// ([`SolveReport::set_admissibility`] sets them).
+pub const ADMISSIBILITY_NOT_COMPUTED: &str =
+    "not computed (the sampled sign checks are set by SolveReport::set_admissibility)";
 
 /// The report of one solved case (`wedge solve`, a row of `wedge curve`): every quantity
 /// dimensionless, the field names are the report keys ([`SOLVE_KEYS`]).
@@ -337,6 +345,10 @@ pub struct SolveReport {
     pub contact_compressive: Entry<bool>,
     /// No interpenetration outside the contact.
     pub no_interpenetration: Entry<bool>,
+    /// The indenter speed V is positive beyond its estimate.
+    pub speed_positive: Entry<bool>,
+    /// The normal force P is positive (compressive) beyond its estimate.
+    pub force_compressive: Entry<bool>,
     /// The relative error estimate of V (the solve's summary accuracy).
     pub error_estimate: f64,
     /// Significant digits printed.
@@ -393,6 +405,8 @@ impl SolveReport {
             ("slip_direction_ok", (&self.slip_direction_ok).into()),
             ("contact_compressive", (&self.contact_compressive).into()),
             ("no_interpenetration", (&self.no_interpenetration).into()),
+            ("speed_positive", (&self.speed_positive).into()),
+            ("force_compressive", (&self.force_compressive).into()),
             ("error_estimate", Item::Ratio(self.error_estimate)),
             ("digits", Item::Count(self.digits)),
         ]
@@ -475,6 +489,22 @@ pub fn print_floor(digits: usize, bits: u32) -> f64 {
     (0.5 * 10f64.powi(1 - digits as i32)).max(8.0 * 2f64.powi(-(bits as i32)))
 }
 
+/// Whether `value` is positive beyond its estimate `error`: true above it, false below
+/// -error, unavailable (with the reason) in between, where its sign is not determined.
+fn sign_flag(what: &str, value: f64, error: f64) -> Entry<bool> {
+    if !(value.is_finite() && error.is_finite()) {
+        Entry::Unavailable(format!("{what} is not finite"))
+    } else if value > error {
+        Entry::Value(true)
+    } else if value < -error {
+        Entry::Value(false)
+    } else {
+        Entry::Unavailable(format!(
+            "the sign of {what} is not determined: {value:e} with the estimate {error:e}"
+        ))
+    }
+}
+
 /// The optional quantity `key`, or the reason it is unavailable (its error, a value that is
 /// not finite, or an estimate that is not: [`Quantity::new`]).
 fn entry<T: Real>(
@@ -491,8 +521,11 @@ fn entry<T: Real>(
 
 impl SolveReport {
     /// The report of the solved case `s` of `input`, printed to `digits` digits, every
-    /// quantity but the admissibility checks ([`NOT_FOR_CURVE_ROWS`]; see
+    /// quantity but the sampled admissibility checks ([`ADMISSIBILITY_NOT_COMPUTED`]; see
     /// [`Self::set_admissibility`]).
+    ///
+    /// A V whose relative estimate exceeds [`wedge::MAX_REL_ERROR`] is refused
+    /// ([`WedgeError::Undetermined`]): its sign is not determined at the working precision.
     pub fn of<T, S>(s: &S, input: &CaseInput, digits: usize) -> Result<Self>
     where
         T: complexfn::quadrature::CachedRules,
@@ -517,20 +550,37 @@ impl SolveReport {
             Entry::when(sel, key, || entry(key, f(), floor, digits))
         };
         let v = s.v_hat()?;
+        let v_rel = v.error / v.value.to_f64().abs();
+        if !(v_rel <= wedge::MAX_REL_ERROR) {
+            return Err(WedgeError::Undetermined {
+                what: "v_over_c1_cot_theta".into(),
+                reached: v_rel,
+                allowed: wedge::MAX_REL_ERROR,
+            });
+        }
         let speed_scale = (c1.clone() * &cot).to_f64().abs();
         let speed = v.value.clone() * &c1 * &cot;
-        let force = if sel.wants("force_over_a_mu_cot_theta") {
-            let f = s.force_hat()?;
-            Entry::Value(Quantity::new(
-                "force_over_a_mu_cot_theta",
-                &f.value,
-                f.error,
-                floor,
-                digits,
-            )?)
+        let force_key = "force_over_a_mu_cot_theta";
+        let force_hat = if sel.wants(force_key) || sel.wants("force_compressive") {
+            Some(s.force_hat())
         } else {
-            Entry::Omitted
+            None
         };
+        let force = match &force_hat {
+            Some(f) if sel.wants(force_key) => {
+                let f = f.as_ref().map_err(Clone::clone)?;
+                Entry::Value(Quantity::new(force_key, &f.value, f.error, floor, digits)?)
+            }
+            _ => Entry::Omitted,
+        };
+        let speed_positive = Entry::when(sel, "speed_positive", || {
+            sign_flag("V", v.value.to_f64(), v.error)
+        });
+        let force_compressive = Entry::when(sel, "force_compressive", || match &force_hat {
+            Some(Ok(f)) => sign_flag("the force", f.value.to_f64(), f.error),
+            Some(Err(e)) => Entry::Unavailable(format!("the force: {e}")),
+            None => Entry::Unavailable("the force was not computed".into()),
+        });
         let apex_keys = ["apex_exponent", "apex_amplitude_over_mu_cot_theta"];
         let (regime, apex_exponent, apex_amplitude) = if !apex_keys.iter().any(|k| sel.wants(k)) {
             (s.regime(), Entry::Omitted, Entry::Omitted)
@@ -567,7 +617,7 @@ impl SolveReport {
         let ray = s.rayleigh();
         let not_here = |k| {
             Entry::when(sel, k, || {
-                Entry::Unavailable(NOT_FOR_CURVE_ROWS.to_string())
+                Entry::Unavailable(ADMISSIBILITY_NOT_COMPUTED.to_string())
             })
         };
         let mut report = SolveReport {
@@ -601,6 +651,8 @@ impl SolveReport {
             slip_direction_ok: not_here("slip_direction_ok"),
             contact_compressive: not_here("contact_compressive"),
             no_interpenetration: not_here("no_interpenetration"),
+            speed_positive,
+            force_compressive,
             error_estimate,
             digits,
         };
@@ -608,7 +660,34 @@ impl SolveReport {
         Ok(report)
     }
 
-    /// Sets the three admissibility flags, or declares them unavailable with the reason.
+    /// Echoes the contact-zone speed alpha as the caller gave it (its decimal text, not
+    /// rounded to the digits printed). Its estimate is the working precision's round-off
+    /// (the value the case was computed with), not the print floor of the digits asked for.
+    pub(crate) fn echo_alpha(&mut self, alpha: &wedge::Param) {
+        self.alpha = self.echoed(alpha);
+    }
+
+    /// Echoes the indenter speed V as the caller gave it: the inverse solve's own estimate
+    /// of the speed reached is kept (see [`Self::echo_alpha`]).
+    pub(crate) fn echo_speed(&mut self, speed: &wedge::Param) {
+        let error = self.speed.error;
+        self.speed = Quantity {
+            error,
+            ..self.echoed(speed)
+        };
+    }
+
+    /// An input as given, with the working precision's round-off as its estimate.
+    fn echoed(&self, x: &wedge::Param) -> Quantity {
+        let bits = self.input.precision().map(|p| p.bits()).unwrap_or(53);
+        Quantity {
+            text: x.text().to_string(),
+            error: 8.0 * 2f64.powi(-(bits as i32)) * x.value().abs(),
+        }
+    }
+
+    /// Sets the three sampled admissibility flags, or declares them unavailable with the
+    /// reason.
     pub fn set_admissibility(&mut self, checks: Result<wedge::Admissibility>) {
         let (values, why) = match checks {
             Ok(a) => (

@@ -2,6 +2,9 @@
 //! 90 - 1e-6 degrees, gamma up to 10 and 1e6, p from 1e-8 to m_R (1 - 1e-12), both solution
 //! variants): every case returns a full report (every quantity the command line prints, the
 //! admissibility checks, the stress) or a typed error; never a panic, a NaN or an infinity.
+//! The paper's construction reaches every case but those whose V the f64 path does not
+//! determine (relative estimate above `wedge::MAX_REL_ERROR`, refused as such: sharp wedges
+//! within 1e-12 of the Rayleigh speed).
 //! Every STRIDE-th case is compared quantity by quantity with a high-precision solve: no
 //! actual error exceeds the estimate the report states for it (all of them in
 //! `cargo run --release --example stability_report`). The genuine solution, whose f64 solve
@@ -24,6 +27,7 @@ fn stability_grid_every_quantity_against_high_precision() {
         .map(|(i, pt)| (pt, check(pt, i % STRIDE == 0)))
         .collect();
     let (mut compared, mut refused, mut worst) = ([0usize; 2], 0, (0.0_f64, String::new()));
+    let mut undetermined = 0;
     let mut failures = Vec::new();
     for (pt, res) in results {
         match res {
@@ -31,9 +35,16 @@ fn stability_grid_every_quantity_against_high_precision() {
             Ok(Outcome::Refused(msg)) => {
                 assert!(!msg.is_empty() && msg.lines().count() == 1, "{msg}");
                 // the paper's construction reaches every case of the grid in f64 (the sharp
-                // wedges through the endpoint map of the quadrature)
+                // wedges through the endpoint map of the quadrature), but for a V whose sign
+                // f64 does not determine, refused as such
+                let lost = msg.contains("is not determined at this precision")
+                    || msg.contains("cancel beyond the working precision");
                 if pt.solution == Solution::Paper {
-                    failures.push(format!("{}: refused: {msg}", pt.label()));
+                    if lost {
+                        undetermined += 1;
+                    } else {
+                        failures.push(format!("{}: refused: {msg}", pt.label()));
+                    }
                 }
                 refused += 1;
             }
@@ -56,8 +67,13 @@ fn stability_grid_every_quantity_against_high_precision() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     eprintln!(
-        "extreme grid: compared {} paper and {} genuine cases, {refused} refused; worst actual/stated {:.3} at {}",
+        "extreme grid: compared {} paper and {} genuine cases, {refused} refused \
+         ({undetermined} paper cases as undetermined); worst actual/stated {:.3} at {}",
         compared[0], compared[1], worst.0, worst.1
+    );
+    assert!(
+        undetermined <= 40,
+        "{undetermined} paper cases undetermined"
     );
     assert!(compared[0] > 150 && compared[1] > 3, "{compared:?}");
 }

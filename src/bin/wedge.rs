@@ -10,10 +10,13 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use cli::{
-    field_json, linspace, parse_params, parse_points, parse_range, solve_csv_header, solve_csv_row,
-    solve_json, stress_json,
+    check_spacing, field_json, linspace, parse_params, parse_points, parse_range, solve_csv_header,
+    solve_csv_row, solve_json, stress_json,
 };
-use dyncontact::{solve, CaseInput, Selection, SolveReport, Speed, FIELD_KEYS, VERSION};
+use dyncontact::{
+    solve, CaseInput, Selection, SolveReport, Speed, ADMISSIBILITY_KEYS, FIELD_KEYS, SIGN_KEYS,
+    VERSION,
+};
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rug::Float;
@@ -285,6 +288,37 @@ fn header_lines(input: &CaseInput) -> Vec<String> {
     ]
 }
 
+/// The `#` line of a curve's CSV that says what its admissibility columns hold, when it has
+/// any.
+fn flags_header(sel: &Selection) -> Option<String> {
+    let sign: Vec<&str> = SIGN_KEYS.iter().copied().filter(|k| sel.wants(k)).collect();
+    let sampled: Vec<&str> = ADMISSIBILITY_KEYS
+        .iter()
+        .copied()
+        .filter(|k| sel.wants(k))
+        .collect();
+    if sign.is_empty() && sampled.is_empty() {
+        return None;
+    }
+    let mut parts = Vec::new();
+    if !sign.is_empty() {
+        parts.push(format!(
+            "{} (V > 0 and the normal force P > 0, each beyond its estimate, at the working precision)",
+            sign.join(", ")
+        ));
+    }
+    if !sampled.is_empty() {
+        parts.push(format!(
+            "{} (sign checks sampling the contact and its outside, on each row's case in f64)",
+            sampled.join(", ")
+        ));
+    }
+    Some(format!(
+        "# admissibility, computed per row: {}; a flag that cannot be computed is an empty cell, its reason on a # line after the row",
+        parts.join("; ")
+    ))
+}
+
 fn run(cli: Cli) -> Result<()> {
     let stdout = std::io::stdout();
     match cli.command {
@@ -354,7 +388,15 @@ fn run(cli: Cli) -> Result<()> {
             let inp = input(&case, digits, Defaults::ByFriction)?;
             let sel = select.selection()?;
             let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
-            let bits = inp.precision()?.bits();
+            check_spacing("alpha-range", &alpha_range, &lo, &hi, n)?;
+            // the bits the rows are computed with (double-double up to 30 digits)
+            let bits = if inp.uses_double_double() {
+                inp.precision()?
+                    .bits()
+                    .max(complexfn::double_double::DD_BITS)
+            } else {
+                inp.precision()?.bits()
+            };
             if n > CURVE_CAP && !force {
                 return Err(WedgeError::InvalidParameter {
                     name: "alpha-range steps",
@@ -374,6 +416,9 @@ fn run(cli: Cli) -> Result<()> {
                 write!(lock, "[").ok();
             } else {
                 for l in header_lines(&inp) {
+                    writeln!(lock, "{l}").ok();
+                }
+                if let Some(l) = flags_header(&sel) {
                     writeln!(lock, "{l}").ok();
                 }
                 writeln!(lock, "{}", solve_csv_header(&sel)).ok();
@@ -406,6 +451,17 @@ fn run(cli: Cli) -> Result<()> {
                         write!(lock, "{sep}{}", solve_json(&r)).ok();
                     } else {
                         writeln!(lock, "{}", solve_csv_row(&r, &sel)).ok();
+                        // a flag that could not be computed: why, after its row
+                        for (k, why) in r.unavailable() {
+                            if ADMISSIBILITY_KEYS.contains(&k) || SIGN_KEYS.contains(&k) {
+                                writeln!(
+                                    lock,
+                                    "# alpha = {} m/s: {k} unavailable: {why}",
+                                    r.alpha.text()
+                                )
+                                .ok();
+                            }
+                        }
                     }
                     first = false;
                 }

@@ -356,9 +356,59 @@ pub struct TsOptions {
     /// Fewest levels before the error estimate is trusted.
     pub min_level: usize,
     /// Exponent alpha of an algebraic singularity |v - a|^alpha at the left end, if any.
-    pub left_exponent: Option<f64>,
+    pub left_exponent: Option<EndExponent>,
     /// Exponent alpha of an algebraic singularity |b - v|^alpha at the right end, if any.
-    pub right_exponent: Option<f64>,
+    pub right_exponent: Option<EndExponent>,
+}
+
+/// The exponent alpha > -1 of an endpoint singularity |v - end|^alpha, with its distance
+/// from -1, the gap 1 + alpha, kept apart as an unevaluated sum of two doubles (about 106
+/// bits) so that it keeps its relative accuracy however close alpha is to -1.
+///
+/// Close to -1 the integral is dominated by the part within a distance far below any
+/// floating-point range of the end, which the map sums in closed form from the gap (see
+/// [`tanh_sinh`]): a gap rounded as -1 + gap in f64 would carry the relative error
+/// 1e-16/gap into that part.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EndExponent {
+    /// alpha, rounded to f64 (decides the form of the map).
+    alpha: f64,
+    /// 1 + alpha = gap_hi + gap_lo.
+    gap_hi: f64,
+    gap_lo: f64,
+}
+
+impl EndExponent {
+    /// The exponent alpha (its gap 1 + alpha formed in f64, exact for alpha in [-1, -1/2]).
+    pub fn new(alpha: f64) -> Self {
+        EndExponent {
+            alpha,
+            gap_hi: 1.0 + alpha,
+            gap_lo: 0.0,
+        }
+    }
+    /// The exponent alpha = -1 + gap from the gap at any precision (kept to about 106 bits).
+    pub fn from_gap<T: Real>(gap: &T) -> Self {
+        let hi = gap.to_f64();
+        let lo = (gap.clone() - &gap.lit(hi)).to_f64();
+        EndExponent {
+            alpha: hi - 1.0,
+            gap_hi: hi,
+            gap_lo: if lo.is_finite() { lo } else { 0.0 },
+        }
+    }
+    /// alpha, rounded to f64.
+    pub fn alpha(&self) -> f64 {
+        self.alpha
+    }
+    /// The gap 1 + alpha, rounded to f64 (full relative accuracy).
+    pub fn gap(&self) -> f64 {
+        self.gap_hi
+    }
+    /// The gap 1 + alpha at the precision of `like` (exact to about 106 bits).
+    pub fn gap_at<T: Real>(&self, like: &T) -> T {
+        like.lit(self.gap_hi) + &like.lit(self.gap_lo)
+    }
 }
 
 impl TsOptions {
@@ -373,13 +423,22 @@ impl TsOptions {
         }
     }
     /// Builder: the integrand behaves like |v - a|^alpha at the left end (alpha > -1).
-    pub fn left_singularity(mut self, alpha: f64) -> Self {
-        self.left_exponent = Some(alpha);
-        self
+    pub fn left_singularity(self, alpha: f64) -> Self {
+        self.left_end(EndExponent::new(alpha))
     }
     /// Builder: the integrand behaves like |b - v|^alpha at the right end (alpha > -1).
-    pub fn right_singularity(mut self, alpha: f64) -> Self {
-        self.right_exponent = Some(alpha);
+    pub fn right_singularity(self, alpha: f64) -> Self {
+        self.right_end(EndExponent::new(alpha))
+    }
+    /// Builder: the left end's singularity with its gap 1 + alpha given to full accuracy
+    /// (exponents close to -1).
+    pub fn left_end(mut self, e: EndExponent) -> Self {
+        self.left_exponent = Some(e);
+        self
+    }
+    /// Builder: the right end's singularity with its gap 1 + alpha given to full accuracy.
+    pub fn right_end(mut self, e: EndExponent) -> Self {
+        self.right_exponent = Some(e);
         self
     }
     /// The same options without endpoint exponents (for a sub-interval that touches neither
@@ -399,9 +458,13 @@ impl TsOptions {
 /// Exponents above this are left to the plain rule (its tail reaches 2^(-3 prec), enough for
 /// |v - a|^alpha with alpha >= -2/3); below it the end is mapped.
 const MAP_BELOW: f64 = -1.0 / 3.0;
-/// Strongest endpoint exponent the map accepts (kappa up to 10^4); a declared exponent below
-/// it is taken as this one (the mapped integrand then keeps a weak singularity).
-const ALPHA_FLOOR: f64 = -0.9999;
+/// Largest power-map exponent kappa = 1/(1 + alpha): closer to alpha = -1 the map squeezes
+/// the integrand's variation into a layer of width about 1/kappa at y = 1 that the levels can
+/// step over unseen, and the exponential map takes over (see [`tanh_sinh`]).
+const KAPPA_POWER_MAX: f64 = 1e4;
+/// The longest interval of the exponential map's variable s for a type without a floor
+/// (MPFR): (b - a) e^(-S) stays far inside MPFR's default exponent range (2^(-2^30)).
+const S_CAP_WIDE: f64 = 1e8;
 /// Largest power-map exponent kappa that is rounded up to an integer (see [`tanh_sinh`]).
 /// Up to it, where the exponent range is narrow, the continuation below y_f (at most
 /// 1e-72 for kappa <= 4) stays far below every precision's resolution.
@@ -440,7 +503,8 @@ impl Tail {
 ///
 /// Strong endpoint singularities declared in `opts` (|v - a|^alpha with alpha < -1/3) are
 /// removed by the substitution v - a = (b - a) y^kappa, kappa = 1/(1 + alpha) (rounded up to
-/// an integer when that is at most 4, so that the powers are products), with both
+/// an integer when that is at most 4, so that the powers are products; otherwise formed at the
+/// working precision from the declared gap 1 + alpha, [`EndExponent`]), with both
 /// distances to the ends of [a, b] recomputed exactly in the original variable
 /// (b - v = -(b - a) expm1(kappa ln1p(-(1 - y))), or (b - a)(1 - y)(1 + y + ... + y^(kappa - 1))):
 /// the mapped integrand kappa (b - a)^(1 + alpha) y^(kappa (1 + alpha) - 1) g(v),
@@ -452,19 +516,30 @@ impl Tail {
 /// what a type with a narrow exponent range represents (f64: y_f = 0.0067 at alpha = -0.9925,
 /// where |v - a| = 1e-288 |b - a|). There the mapped integrand is taken as its value at y_f:
 /// it equals kappa (b - a)^(1 + alpha) g(a + (b - a) y^kappa) (y to the power
-/// kappa (1 + alpha) - 1 = 0, kappa being unrounded there), constant to the relative
+/// kappa (1 + alpha) - 1 = 0, kappa being formed from the gap), constant to the relative
 /// variation of g over 1e-288 (b - a), far below the precision. MPFR's exponent range never
 /// needs this.
 ///
+/// Beyond kappa = 10^4 (gap below 1e-4) the power map gives way to the exponential map
+/// v - a = (b - a) e^(-s): the integral is Int_0^inf F(s) ds with F = f (v - a)
+/// = (b - a)^gap e^(-gap s) g(v), a smooth function of s whose variation (that of g) lies at
+/// s of order one. It is summed by tanh-sinh over [0, S], and beyond S in closed form:
+/// Int_S^inf F = F(S)/gap, g being constant there to the working precision. S is where
+/// e^(-gap S) falls below the working precision (the tail is then negligible), at least
+/// 2 (prec + 16) ln 2 and at most where v - a nears the type's floor (f64: S = 662; MPFR:
+/// 10^8). Once gap S is small the tail is almost all of the integral and carries the gap's
+/// relative error (2^-104 from its two doubles, counted in the estimate).
+///
 /// Returns the estimate of the last level and `|S_k - S_{k-1}|` as its error; fails with
-/// [`Error::NoConvergence`] when the finest cached level does not reach `opts.rel_tol`.
+/// [`Error::NoConvergence`] when the finest cached level does not reach `opts.rel_tol`, and
+/// with [`Error::InvalidParameter`] for a declared exponent not above -1.
 pub fn tanh_sinh<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Estimate<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
     F: FnMut(&Point<T>) -> V,
 {
-    let strong = |e: Option<f64>| e.filter(|&x| x < MAP_BELOW);
+    let strong = |e: Option<EndExponent>| e.filter(|x| !(x.alpha >= MAP_BELOW));
     match (strong(opts.left_exponent), strong(opts.right_exponent)) {
         (None, None) => tanh_sinh_plain(a, b, opts, f),
         (Some(al), None) => mapped_end(a, b, al, true, opts, f),
@@ -496,11 +571,66 @@ where
     }
 }
 
-/// The power map at one end (see [`tanh_sinh`]).
+/// The point of [a, b] at distance `near` from the singular end (the left one when `left`),
+/// `far` = (b - a) - near from the other.
+fn end_point<T: Real>(a: &T, b: &T, left: bool, near: T, far: T) -> Point<T> {
+    if left {
+        Point {
+            v: if near < far {
+                a.clone() + &near
+            } else {
+                b.clone() - &far
+            },
+            from_a: near,
+            to_b: far,
+        }
+    } else {
+        Point {
+            v: if near < far {
+                b.clone() - &near
+            } else {
+                a.clone() + &far
+            },
+            from_a: far,
+            to_b: near,
+        }
+    }
+}
+
+/// The map at one singular end (see [`tanh_sinh`]): the power map, or the exponential map for
+/// a gap 1 + alpha below 1/[`KAPPA_POWER_MAX`].
 fn mapped_end<T, V, F>(
     a: &T,
     b: &T,
-    alpha: f64,
+    e: EndExponent,
+    left: bool,
+    opts: TsOptions,
+    f: F,
+) -> Result<Estimate<V>>
+where
+    T: CachedRules,
+    V: QuadValue<T>,
+    F: FnMut(&Point<T>) -> V,
+{
+    if !(e.gap_hi > 0.0 && e.gap_hi.is_finite()) {
+        return Err(Error::InvalidParameter {
+            name: "endpoint exponent",
+            value: format!("{}", e.alpha),
+            range: "(-1, 0) (an integrable endpoint singularity)",
+        });
+    }
+    if 1.0 / e.gap_hi > KAPPA_POWER_MAX {
+        exponential_end(a, b, e, left, opts, f)
+    } else {
+        power_end(a, b, e, left, opts, f)
+    }
+}
+
+/// The power map v - a = (b - a) y^kappa at one end (see [`tanh_sinh`]).
+fn power_end<T, V, F>(
+    a: &T,
+    b: &T,
+    e: EndExponent,
     left: bool,
     opts: TsOptions,
     mut f: F,
@@ -510,48 +640,26 @@ where
     V: QuadValue<T>,
     F: FnMut(&Point<T>) -> V,
 {
-    let alpha = alpha.max(ALPHA_FLOOR);
     // kappa = 1/(1 + alpha), rounded up to an integer up to INTEGER_KAPPA: the powers of y
     // are then products, and the mapped integrand keeps the bounded factor
-    // y^(kappa (1 + alpha) - 1), of non-negative exponent
-    let kappa = 1.0 / (1.0 + alpha);
-    let kappa = if kappa.ceil() <= INTEGER_KAPPA {
-        kappa.ceil()
+    // y^(kappa (1 + alpha) - 1), of non-negative exponent; otherwise formed from the gap at
+    // the working precision, so that this factor is 1 to that precision
+    let kappa = 1.0 / e.gap_hi;
+    let (kappa, k, kappa_int) = if kappa.ceil() <= INTEGER_KAPPA {
+        let n = kappa.ceil();
+        (n, a.lit(n), Some(n as u32))
     } else {
-        kappa
+        (kappa, e.gap_at(a).recip(), None)
     };
-    let k = a.lit(kappa);
     let len = b.clone() - a;
     let zero = a.zero();
     let one = a.one();
-    let kappa_int = (kappa.fract() == 0.0).then_some(kappa as u32);
     // the point and the mapped integrand at y, given near = y^kappa (b - a) and
     // far = (1 - y^kappa) (b - a)
     let mut mapped = |y: &T, near: T, far: T| -> V {
         // dv/dy = kappa len y^(kappa - 1) = kappa near/y
         let jac = near.clone() * &k / y.clone();
-        let p = if left {
-            Point {
-                v: if near < far {
-                    a.clone() + &near
-                } else {
-                    b.clone() - &far
-                },
-                from_a: near,
-                to_b: far,
-            }
-        } else {
-            Point {
-                v: if near < far {
-                    b.clone() - &near
-                } else {
-                    a.clone() + &far
-                },
-                from_a: far,
-                to_b: near,
-            }
-        };
-        f(&p).scaled(&jac)
+        f(&end_point(a, b, left, near, far)).scaled(&jac)
     };
     // a narrow exponent range: below y_f (where near = FLOOR_MARGIN times the normal floor)
     // the mapped integrand is continued from its value at y_f
@@ -560,10 +668,7 @@ where
         .normal_floor()
         .map(|fl| fl * FLOOR_MARGIN)
         .filter(|&near_f| near_f < len_f)
-        .map(|near_f| {
-            let y_f = (near_f / len_f).powf(1.0 / kappa);
-            (a.lit(y_f), a.lit(near_f))
-        });
+        .map(|near_f| a.lit((near_f / len_f).powf(1.0 / kappa)));
     let mut frozen: Option<V> = None;
     // (y^kappa, 1 - y^kappa), each with full relative accuracy (1 - y exact from the offsets)
     let powers = |y: &T, one_minus_y: &T| -> (T, T) {
@@ -601,12 +706,14 @@ where
         if *y == 0.0 {
             return V::zero_like(a);
         }
-        if let Some((y_f, near_f)) = &floor {
+        if let Some(y_f) = &floor {
             if y < y_f {
+                // the value at y_f, its distances formed from y_f itself (so that the
+                // Jacobian and the point agree to the working precision)
                 return frozen
                     .get_or_insert_with(|| {
-                        let far = powers(y_f, &(one.clone() - y_f)).1 * &len;
-                        mapped(y_f, near_f.clone(), far)
+                        let (yk, rest) = powers(y_f, &(one.clone() - y_f));
+                        mapped(y_f, yk * &len, rest * &len)
                     })
                     .clone();
             }
@@ -620,6 +727,69 @@ where
             return V::zero_like(a);
         }
         mapped(y, near, rest * &len)
+    })
+}
+
+/// The exponential map v - a = (b - a) e^(-s) at one end, for a gap 1 + alpha below
+/// 1/[`KAPPA_POWER_MAX`]: tanh-sinh over [0, S] and the closed-form tail F(S)/gap beyond
+/// (see [`tanh_sinh`]).
+fn exponential_end<T, V, F>(
+    a: &T,
+    b: &T,
+    e: EndExponent,
+    left: bool,
+    opts: TsOptions,
+    mut f: F,
+) -> Result<Estimate<V>>
+where
+    T: CachedRules,
+    V: QuadValue<T>,
+    F: FnMut(&Point<T>) -> V,
+{
+    let len = b.clone() - a;
+    let len_f = len.to_f64().abs();
+    // S: far enough that the tail e^(-gap S) is below the working precision (then its closed
+    // form is a formality), but at most where (b - a) e^(-S) nears the type's floor; at least
+    // where that distance is below the working precision's resolution of g
+    let bits = f64::from(a.prec()) + 16.0;
+    let s_prec = 2.0 * bits * std::f64::consts::LN_2;
+    let s_cap = match a.normal_floor() {
+        Some(fl) => (len_f / (fl * FLOOR_MARGIN)).ln(),
+        None => S_CAP_WIDE,
+    };
+    let s_max = (bits * std::f64::consts::LN_2 / e.gap_hi)
+        .min(s_cap)
+        .max(s_prec.min(s_cap));
+    if !(s_max > 1.0) {
+        return Err(Error::NoConvergence {
+            what: "tanh-sinh quadrature (an interval too short for its endpoint map)",
+            reached: f64::INFINITY,
+            asked: opts.rel_tol,
+        });
+    }
+    let s_end = a.lit(s_max);
+    let mut at = |s: &T| -> V {
+        // near = (b - a) e^(-s), far = -(b - a) expm1(-s), each to full relative accuracy
+        let near = (-s.clone()).exp() * &len;
+        let far = -((-s.clone()).exp_m1() * &len);
+        let jac = near.clone();
+        f(&end_point(a, b, left, near, far)).scaled(&jac)
+    };
+    let zero = a.zero();
+    let body = tanh_sinh_plain(&zero, &s_end, opts.without_ends(), |q: &Point<T>| {
+        at(&q.from_a)
+    })?;
+    let tail = at(&s_end).scaled(&e.gap_at(a).recip());
+    // the tail carries the gap's relative error: 2^-104 from its two doubles, or the
+    // working precision's round-off, whichever is larger
+    let rel = (2f64.powi(-104)).max(4.0 * a.epsilon().to_f64());
+    let tail_error = tail.magnitude().to_f64() * rel;
+    let mut value = body.value;
+    value.add_scaled(&tail, &a.one());
+    Ok(Estimate {
+        value,
+        error: body.error + tail_error,
+        evals: body.evals + 1,
     })
 }
 
@@ -1082,6 +1252,59 @@ mod tests {
             assert!(
                 crate::scalar::rel_diff(&e.value, &exact128) < 1e-30,
                 "{alpha} at 128 bits"
+            );
+        }
+    }
+
+    /// int_0^1 v^(-1 + g) (1 - v)^(-1/2) (1 + v) dv = B(g, 1/2) + B(1 + g, 1/2) at 600 bits.
+    fn beta_sum(gap: f64) -> Float {
+        let x = Float::with_val(600, gap);
+        let half = Float::with_val(600, 0.5);
+        let beta = |x: Float| -> Float {
+            (x.clone().ln_gamma() + half.clone().ln_gamma() - (x + &half).ln_gamma()).exp()
+        };
+        beta(x.clone()) + beta(x + 1.0)
+    }
+
+    /// The integral of [`beta_sum`] at the precision of `like`, its exponent's gap declared
+    /// exactly and the integrand's power formed from the gap (v^(-1 + g) = e^(g ln v)/v).
+    fn gap_integral<T: CachedRules>(like: &T, gap: f64, tol: f64) -> (f64, f64) {
+        let g = like.lit(gap);
+        let opts = TsOptions::new(tol)
+            .left_end(EndExponent::from_gap(&g))
+            .right_singularity(-0.5);
+        let f = |p: &Point<T>| {
+            (p.from_a.clone().ln() * &g).exp() / p.from_a.clone() / p.to_b.clone().sqrt()
+                * (p.v.clone() + 1.0)
+        };
+        let e: Estimate<T> = tanh_sinh(&like.zero(), &like.one(), opts, f).unwrap();
+        let exact = beta_sum(gap);
+        let actual = Float::with_val(600, e.value.to_mpfr(600) - &exact).abs() / &exact;
+        (actual.to_f64(), e.error / exact.to_f64())
+    }
+
+    #[test]
+    fn endpoint_map_reaches_gaps_far_below_the_exponent_range() {
+        // alpha = -1 + gap with gap from 1e-3 (power map) to 1e-100 (exponential map, the tail
+        // beyond the floor in closed form): the integral ~ 1/gap, its regular part 3.4, to
+        // the working precision in f64, double-double and MPFR, the estimates honest (above
+        // a round-off floor of 16 units)
+        let floor = |bits: i32| 16.0 * 2f64.powi(-bits);
+        for gap in [1e-3, 1e-4, 9e-5, 1e-6, 1e-10, 1e-14, 1e-30, 1e-100] {
+            let (a, e) = gap_integral(&0.0_f64, gap, 1e-15);
+            assert!(
+                a < 1e-15 && a <= e.max(floor(53)),
+                "f64 gap {gap:e}: {a:e} {e:e}"
+            );
+            let (a, e) = gap_integral(&crate::Dd::from_f64(0.0), gap, 1e-30);
+            assert!(
+                a < 1e-30 && a <= e.max(floor(104)),
+                "double-double gap {gap:e}: {a:e} {e:e}"
+            );
+            let (a, e) = gap_integral(&Float::with_val(165, 0), gap, 1e-45);
+            assert!(
+                a < 1e-45 && a <= e.max(floor(165)),
+                "165 bits gap {gap:e}: {a:e} {e:e}"
             );
         }
     }

@@ -11,7 +11,7 @@
 
 use std::sync::OnceLock;
 
-use complexfn::quadrature::CachedRules;
+use complexfn::quadrature::{CachedRules, EndExponent};
 use complexfn::{Cx, Rayleigh, Real};
 
 use crate::error::{invalid, Result, WedgeError};
@@ -46,6 +46,10 @@ pub struct Case<T> {
     pub(crate) on_boundary: bool,
     /// -1/2 + Omega(p): the exponent of the edge singularity of H (declared to the quadrature).
     pub(crate) edge_exponent: f64,
+    /// The same exponent with its gap 1/2 + Omega(p) to full relative accuracy: close to -1
+    /// (sharp wedges with coupling) the quadrature sums the part of the integrals next to the
+    /// edge in closed form from it.
+    pub(crate) edge_end: EndExponent,
     pub(crate) matching: OnceLock<std::result::Result<crate::matching::Matching<T>, WedgeError>>,
     pub(crate) apex: OnceLock<std::result::Result<crate::regime::Apex<T>, WedgeError>>,
 }
@@ -77,6 +81,15 @@ impl<T: CachedRules> Case<T> {
             ));
         }
         let cot_theta = indenter.cot_theta(&p);
+        if !cot_theta.is_finite() {
+            // Theta so small that cot Theta exceeds the working precision's range
+            return Err(invalid(
+                "theta_deg",
+                indenter.theta_deg().text(),
+                "(0, 90) degrees with cot Theta within the working precision's range \
+                 (in f64, Theta above about 3.2e-307 degrees)",
+            ));
+        }
         let gamma = indenter.gamma().to_real(&p);
         let beta = match indenter.coupling() {
             Coupling::On => -cot_theta.clone(),
@@ -93,7 +106,9 @@ impl<T: CachedRules> Case<T> {
         let bg = beta.clone() * &gamma;
         let omega = OmegaFn::new(ray, bpg, bg);
         let inner = InnerRule::new(&omega, &p)?;
-        let edge_exponent = omega.omega(&p).to_f64() - 0.5;
+        let edge_gap = omega.half_plus_omega(&p);
+        let edge_end = EndExponent::from_gap(&edge_gap);
+        let edge_exponent = edge_end.alpha();
         Ok(Case {
             material: material.clone(),
             indenter: indenter.clone(),
@@ -106,6 +121,7 @@ impl<T: CachedRules> Case<T> {
             inner,
             on_boundary,
             edge_exponent,
+            edge_end,
             matching: OnceLock::new(),
             apex: OnceLock::new(),
         })
@@ -174,6 +190,11 @@ impl<T: Real> Case<T> {
     pub fn edge_exponent(&self) -> f64 {
         self.edge_exponent
     }
+    /// The edge exponent with its gap 1/2 + Omega(p) (its distance from -1) to full relative
+    /// accuracy, as the quadrature takes it.
+    pub fn edge_end(&self) -> EndExponent {
+        self.edge_end
+    }
     /// Whether gamma = cot Theta was detected (coupled case), where Omega = 0 identically.
     pub fn on_regime_boundary(&self) -> bool {
         self.on_boundary
@@ -222,38 +243,44 @@ impl<T: Real> Case<T> {
     /// For v >= m the integral form of Lambda0 is used. `v_minus_p` is v - p to full
     /// relative accuracy.
     ///
-    /// With q = v^2 - p^2, both are evaluated as H/v = exp(c)/sqrt(q). For v < m,
+    /// With q = v^2 - p^2, both are evaluated from exp(c)/sqrt(q). For v < m,
     /// c = Omega(v) ln(q/v^2) + b(v): one logarithm, of q/v^2 = 1 - p^2/v^2 in (0, 1), which
-    /// keeps its relative accuracy however close v is to p. For v >= m,
-    /// c = Omega0 ln(q/v^2) + Lambda0(v) = Int_0^{p^2} Omega(u)/(u - v^2) du, one sum over the
-    /// inner rule without a logarithm ([`InnerRule::omega_cauchy_outside`]).
+    /// keeps its relative accuracy however close v is to p; with Omega = -1/2 + g
+    /// (g = 1/2 + Omega to full relative accuracy, [`OmegaFn::omega_and_gap`]) this is
+    /// H/v = (v/q) exp(g ln(q/v^2) + b(v)), whose exponent stays small next to the edge when
+    /// Omega is close to -1/2 (sharp wedges with coupling), so that H/v keeps its relative
+    /// accuracy at distances from the edge far below the f64 range of (v - p)^(-1/2).
+    /// For v >= m, c = Omega0 ln(q/v^2) + Lambda0(v) = Int_0^{p^2} Omega(u)/(u - v^2) du, one
+    /// sum over the inner rule without a logarithm ([`InnerRule::omega_cauchy_outside`]).
     pub fn h_over_v_outside(&self, v: &T, v_minus_p: &T) -> T {
         let s = v.clone().sqr();
         let vp = v_minus_p.clone() * (v.clone() + &self.p);
-        let arg = if v < self.m() {
+        if v < self.m() {
             let log = (vp.clone() / &s).ln();
-            let om = self.omega.omega(v);
-            let om_rel = om.clone() - self.omega.omega0();
+            let (om, gap) = self.omega.omega_and_gap(v);
+            let om_rel = om - self.omega.omega0();
             let b = self.inner.b_with(&self.omega, &s, &om_rel);
-            log * om + b
+            (log * gap + b).exp() * v / vp
         } else {
-            self.inner.omega_cauchy_outside(&s)
-        };
-        arg.exp() / vp.sqrt()
+            self.inner.omega_cauchy_outside(&s).exp() / vp.sqrt()
+        }
     }
 
     /// X(v) = v^(1 - 2 Omega) (p^2 - v^2)^(-1/2 + Omega) e^(b(v)) on the contact 0 < v < p, the
     /// modulus of H^{+-}(v) (corrected eq (32): H^{+-} = -+ i X e^(+- i pi Omega)), together with
     /// Omega(v). `p_minus_v` is p - v to full relative accuracy.
+    ///
+    /// With Omega = -1/2 + g (g = 1/2 + Omega to full relative accuracy) and
+    /// w = p^2 - v^2, X = exp((2 - 2 g) ln v + g ln w + b(v))/w: the exponent stays small next
+    /// to the edge when Omega is close to -1/2 (see [`Case::h_over_v_outside`]).
     pub fn x_on_contact(&self, v: &T, p_minus_v: &T) -> ContactFactors<T> {
-        let (om, cos, sin) = self.omega.omega_cos_sin(v);
+        let (om, gap, cos, sin) = self.omega.omega_gap_cos_sin(v);
         let s = v.clone().sqr();
         let om_rel = om.clone() - self.omega.omega0();
         let b = self.inner.b_with(&self.omega, &s, &om_rel);
         let pv = p_minus_v.clone() * (v.clone() + &self.p);
-        let one = om.one();
-        let x =
-            (v.clone().ln() * (one - om.clone() * 2.0) + pv.ln() * (om.clone() - 0.5) + b).exp();
+        let two = om.lit(2.0);
+        let x = (v.clone().ln() * (two - gap.clone() * 2.0) + pv.clone().ln() * gap + b).exp() / pv;
         ContactFactors {
             x,
             omega: om,

@@ -54,6 +54,18 @@ pub enum WedgeError {
         /// The relative error the request allows.
         asked: f64,
     },
+    /// A result whose relative error estimate exceeds what a reported value may carry
+    /// ([`crate::solved::MAX_REL_ERROR`]): its leading digits, even its sign, are not
+    /// determined at the working precision. Never reported as a value.
+    #[error("{what} is not determined at this precision: relative error estimate {reached:.1e}, above the {allowed:e} a reported value may carry")]
+    Undetermined {
+        /// The quantity (its report key).
+        what: String,
+        /// Its relative error estimate.
+        reached: f64,
+        /// The largest relative estimate a reported value may carry.
+        allowed: f64,
+    },
     /// A numerical failure of one case, with the inputs that led to it.
     #[error("{inputs}: {error}")]
     AtCase {
@@ -87,5 +99,21 @@ pub(crate) fn from_quad(what: &str, e: complexfn::Error) -> WedgeError {
             asked,
         },
         other => WedgeError::Complex(other),
+    }
+}
+
+/// `x` to 7 significant digits for a message (fixed notation between 1e-4 and 1e6, trailing
+/// zeros dropped), scientific outside.
+pub(crate) fn short(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 || !x.is_finite() || !(1e-4..1e6).contains(&a) {
+        return format!("{x:.6e}");
+    }
+    let digits = (6 - a.log10().floor() as i32).clamp(0, 12) as usize;
+    let t = format!("{x:.digits$}");
+    if t.contains('.') {
+        t.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        t
     }
 }

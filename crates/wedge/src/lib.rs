@@ -31,5 +31,5 @@ pub use error::{Result, WedgeError};
 pub use inverse::{case_for_speed, for_speed};
 pub use params::{Coupling, Indenter, Material, Param, Solution};
 pub use regime::{Apex, ApexRegime};
-pub use solved::{ApexLeading, ContactSolution, PaperSolver, Solver, PAPER_ONLY};
+pub use solved::{ApexLeading, ContactSolution, PaperSolver, Solver, MAX_REL_ERROR, PAPER_ONLY};
 pub use stress::WithError;

@@ -35,8 +35,8 @@ use complexfn::quadrature::{tanh_sinh, CachedRules, Point, TsOptions};
 use complexfn::{Real, Side};
 
 use crate::case::Case;
-use crate::error::{from_quad, Result};
-use crate::params::Solution;
+use crate::error::{from_quad, Result, WedgeError};
+use crate::params::{Coupling, Solution};
 
 /// The solved matching: the integrals (54), (55) and the constants they give.
 #[derive(Clone, Debug)]
@@ -91,6 +91,12 @@ impl<T: CachedRules> Case<T> {
         let ray = self.rayleigh().clone();
         let tol = tol_for(&p);
         let gamma = self.gamma.clone();
+        // The T-integrals (I5 ... I8) enter (53) times beta: they are integrated times
+        // w = max(1, |beta|), so that the quadratures' estimates (of the largest component)
+        // bound the errors of I1 ... I4 and of beta I5 ... beta I8 alike, the terms that
+        // (53) sums (for a sharp wedge with coupling they nearly cancel).
+        let w = self.beta.clone().abs().max(one.clone());
+        let gamma_w = gamma.clone() * &w;
 
         // (p, m): phi(v) = (H/v) v^2/(m^2 R/(v - m_R)) [|p2|, |p2|/v, gamma|p1|, gamma|p1|/v]
         let phi_a = |pt: &Point<T>| -> [T; 4] {
@@ -104,11 +110,11 @@ impl<T: CachedRules> Case<T> {
             let c = hv * &s / (m2.clone() * rq);
             let inv_v = v.clone().recip();
             let y = c.clone() * p2;
-            let tt = c * p1 * &gamma;
+            let tt = c * p1 * &gamma_w;
             [y.clone(), y * &inv_v, tt.clone(), tt * inv_v]
         };
         let opts_a = TsOptions::new(tol)
-            .left_singularity(self.edge_exponent)
+            .left_end(self.edge_end)
             .right_singularity(-0.5);
         let ea = principal_value(&p, &m, &m_r, opts_a, phi_a)
             .map_err(|e| from_quad("matching integrals on (p, m)", e))?;
@@ -126,7 +132,7 @@ impl<T: CachedRules> Case<T> {
             let pp = p1.clone() * &p2;
             let den = m2.clone() * (pp.clone().sqr() * k.clone().sqr().sqr() + 16.0);
             let yb = s.clone() * &k * &pp * (k.clone() * &p2 - gamma.clone() * 2.0) / &den;
-            let tb = s * &p1 * (gamma.clone() * 2.0 - k * &p2) * 2.0 / den;
+            let tb = s * &p1 * (gamma.clone() * 2.0 - k * &p2) * 2.0 / den * &w;
             let inv_v = v.clone().recip();
             [
                 hv.clone() * &yb,
@@ -146,6 +152,7 @@ impl<T: CachedRules> Case<T> {
 
         let [i1, i3, i5, i7] = ea.value;
         let [i2, i4, i6, i8] = eb.value;
+        let (i5, i7, i6, i8) = (i5 / &w, i7 / &w, i6 / &w, i8 / &w);
         let (i1, i3, i5, i7) = if self.solution == Solution::AsPrinted {
             (i1, i3, i5, i7)
         } else {
@@ -168,13 +175,21 @@ impl<T: CachedRules> Case<T> {
             + i2.clone().abs()
             + (self.beta.clone() * (i5.clone().abs() + i6.clone().abs())).abs())
         .to_f64();
-        let abs_err = ea.error + eb.error + self.inner.error().min(1.0) * (scale_d + scale_n);
-        let rel_d = abs_err * (1.0 + self.beta.to_f64().abs()) / denom.to_f64().abs().max(1e-300);
-        let rel_n = abs_err * (1.0 + self.beta.to_f64().abs()) / numer.to_f64().abs().max(1e-300);
+        // the quadratures bound I1 ... I4 and w I5 ... w I8 to ea.error + eb.error each, so
+        // each of the two sums of (53) to (1 + |beta|/w) times that; the inner rule's error
+        // perturbs every integrand alike (relative to its terms' sizes)
+        let quad = (ea.error + eb.error) * (1.0 + self.beta.to_f64().abs() / w.to_f64());
+        let inner = self.inner.error().min(1.0) * (scale_d + scale_n);
+        let abs_err = quad + inner;
+        let rel_d = abs_err / denom.to_f64().abs().max(1e-300);
+        let rel_n = abs_err / numer.to_f64().abs().max(1e-300);
         let cond = (scale_d / denom.to_f64().abs()).max(scale_n / numer.to_f64().abs().max(1e-300));
         // A factor 4 of margin: the level-difference estimates of tanh-sinh are of the
         // right size but not bounds, and the stated error must never be optimistic.
         let rel_error = 4.0 * (rel_d + rel_n + cond * p.epsilon().to_f64() * 8.0);
+        if !(rel_error <= crate::solved::MAX_REL_ERROR) {
+            return Err(self.undetermined(rel_error));
+        }
         Ok(Matching {
             i: [i1, i2, i3, i4, i5, i6, i7, i8],
             pole,
@@ -184,6 +199,46 @@ impl<T: CachedRules> Case<T> {
             abs_error: abs_err,
             evals: ea.evals + eb.evals,
         })
+    }
+
+    /// The refusal of a matching whose relative error estimate `rel` exceeds
+    /// [`crate::solved::MAX_REL_ERROR`]. For a sharp wedge with coupling (cot Theta > 1) the
+    /// two terms of each sum of (53) are of order cot Theta and cancel to O(1), so the estimate
+    /// grows like cot Theta: the error names theta_deg and the smallest angle the working
+    /// precision resolves at this contact speed and friction, extrapolated along that growth,
+    /// atan(rel/(MAX_REL_ERROR cot Theta)). Otherwise [`WedgeError::Undetermined`].
+    fn undetermined(&self, rel: f64) -> WedgeError {
+        let cot = self.cot_theta.to_f64();
+        let allowed = crate::solved::MAX_REL_ERROR;
+        if self.indenter.coupling() == Coupling::On && cot > 1.0 {
+            let theta = self.indenter.theta_deg().text();
+            // the estimate grows like cot Theta while the sums keep a digit; once they cancel
+            // entirely it saturates, and only says that the angle lies well below the limit
+            let bound = if rel < 1.0 {
+                let min_deg = (rel / (allowed * cot)).atan().to_degrees();
+                format!("Theta above about {min_deg:.1e}")
+            } else {
+                format!("Theta well above {theta}")
+            };
+            return WedgeError::InvalidParameter {
+                name: "theta_deg",
+                value: theta.to_string(),
+                range: format!(
+                    "{bound} degrees at {} bits for alpha = {} m/s and gamma = {}: below it \
+                     the two terms of V in eq (53), each of order cot Theta, cancel beyond the \
+                     working precision (relative error estimate {rel:.1e} of V, above \
+                     {allowed:e}); more digits resolve smaller angles",
+                    self.p.prec(),
+                    crate::error::short(self.p.to_f64() * self.material.c1().value()),
+                    self.indenter.gamma().text(),
+                ),
+            };
+        }
+        WedgeError::Undetermined {
+            what: "v_over_c1_cot_theta".into(),
+            reached: rel,
+            allowed,
+        }
     }
 
     /// Q/(c1^2 cot Theta), from (53b).

@@ -91,6 +91,27 @@ impl<T: Real> OmegaFn<T> {
         num.atan2(&den) / xi.pi()
     }
 
+    /// 1/2 + Omega(xi) for real 0 <= xi < m, with full relative accuracy as Omega -> -1/2
+    /// (a sharp wedge with coupling, where cot Theta is large): with tan(pi Omega) = num/den,
+    /// den > 0, pi (1/2 + Omega) = atan2(den, -num), formed without the cancellation of
+    /// 1/2 + Omega. It is the gap 1 + alpha of the exponent alpha = -1/2 + Omega(p) of the
+    /// fundamental function at the contact edge.
+    pub fn half_plus_omega(&self, xi: &T) -> T {
+        self.omega_and_gap(xi).1
+    }
+
+    /// (Omega(xi), 1/2 + Omega(xi)), each to full relative accuracy, from one evaluation of
+    /// tan(pi Omega) (see [`Self::half_plus_omega`]).
+    pub fn omega_and_gap(&self, xi: &T) -> (T, T) {
+        if self.is_zero() {
+            return (xi.zero(), xi.lit(0.5));
+        }
+        let (num, den) = self.tan_parts(xi);
+        let pi = xi.pi();
+        let gap = den.clone().atan2(&-num.clone()) / &pi;
+        (num.atan2(&den) / pi, gap)
+    }
+
     /// tan(pi Omega) = num/den, eq (31): num = -m^2 (beta + gamma) L/xi^2 and
     /// den = |p2| - beta gamma |p1| > 0 (real arithmetic on the cut).
     fn tan_parts(&self, xi: &T) -> (T, T) {
@@ -111,6 +132,20 @@ impl<T: Real> OmegaFn<T> {
         let h = num.clone().hypot(&den);
         let om = num.clone().atan2(&den) / xi.pi();
         (om, den / &h, num / h)
+    }
+
+    /// (Omega(xi), 1/2 + Omega(xi), cos(pi Omega), sin(pi Omega)): [`Self::omega_cos_sin`]
+    /// with the gap of [`Self::half_plus_omega`].
+    pub fn omega_gap_cos_sin(&self, xi: &T) -> (T, T, T, T) {
+        if self.is_zero() {
+            return (xi.zero(), xi.lit(0.5), xi.one(), xi.zero());
+        }
+        let (num, den) = self.tan_parts(xi);
+        let h = num.clone().hypot(&den);
+        let pi = xi.pi();
+        let om = num.clone().atan2(&den) / &pi;
+        let gap = den.clone().atan2(&-num.clone()) / pi;
+        (om, gap, den / &h, num / h)
     }
 
     /// 1 - 2 Omega0 with full relative accuracy as Omega0 -> 1/2 (strong friction):

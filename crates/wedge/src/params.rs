@@ -230,8 +230,10 @@ impl Indenter {
         self.coupling
     }
     /// cot Theta at the precision of `like`, correctly rounded for the decimal angle given:
-    /// computed as tan((90 - Theta) pi/180) from the decimal text with 64 extra bits, so that
-    /// Theta close to 90 degrees (cot Theta -> 0) keeps full relative accuracy in f64 too.
+    /// computed from the decimal text with 64 extra bits, as tan((90 - Theta) pi/180) for
+    /// Theta >= 45 degrees, so that Theta close to 90 degrees (cot Theta -> 0) keeps full
+    /// relative accuracy in f64 too, and as 1/tan(Theta pi/180) below, so that a sharp wedge
+    /// (cot Theta -> inf) does too: 90 - Theta would lose the digits of a small Theta.
     pub fn cot_theta<T: Real>(&self, like: &T) -> T {
         if like.prec() <= 53 {
             return T::from_f64_prec(self.cot_f64, like.prec());
@@ -240,14 +242,19 @@ impl Indenter {
     }
 }
 
-/// tan((90 - Theta) pi/180) from the decimal angle, with 64 bits beyond `bits`.
+/// cot Theta from the decimal angle, with 64 bits beyond `bits`: tan((90 - Theta) pi/180)
+/// for Theta >= 45 degrees, 1/tan(Theta pi/180) below (each argument without cancellation).
 fn cot_theta_mpfr(theta_deg: &Param, bits: u32) -> rug::Float {
     let bits = bits.max(53) + 64;
     let th = theta_deg.to_real(&rug::Float::with_val(bits, 0));
-    let comp: rug::Float = (rug::Float::with_val(bits, 90) - th)
-        * rug::Float::with_val(bits, rug::float::Constant::Pi)
-        / 180.0;
-    comp.tan()
+    let pi = rug::Float::with_val(bits, rug::float::Constant::Pi);
+    if th >= 45 {
+        let comp: rug::Float = (rug::Float::with_val(bits, 90) - th) * pi / 180.0;
+        comp.tan()
+    } else {
+        let rad: rug::Float = th * pi / 180.0;
+        rad.tan().recip()
+    }
 }
 
 /// Which solution of the problem a result belongs to; named in every output.

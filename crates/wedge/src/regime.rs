@@ -185,7 +185,7 @@ impl<T: CachedRules> Case<T> {
         let upper = tanh_sinh(
             &quarter,
             &p,
-            TsOptions::new(tol).right_singularity(self.edge_exponent()),
+            TsOptions::new(tol).right_end(self.edge_end()),
             |pt: &Point<T>| g(&pt.v, &pt.to_b),
         )
         .map_err(|e| from_quad("apex stress", e))?;

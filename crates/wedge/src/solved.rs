@@ -38,6 +38,14 @@ pub struct ApexLeading<T> {
     pub amplitude: WithError<T>,
 }
 
+/// The largest relative error estimate of V that a solved case reports. Beyond it V's
+/// leading digits, even its sign, are not determined at the working precision (for a sharp
+/// wedge with coupling the two terms of V in eq (53), each of order cot Theta, cancel: their
+/// rounding is amplified about cot Theta times, `docs/errata.md` section 11), and the case is
+/// refused: [`WedgeError::Undetermined`], or for the paper's construction of a sharp wedge a
+/// [`WedgeError::InvalidParameter`] naming theta_deg and the angles the precision resolves.
+pub const MAX_REL_ERROR: f64 = 1e-2;
+
 /// The reason given for a quantity that only the paper's construction defines.
 pub const PAPER_ONLY: &str =
     "defined by the paper's construction only (solution paper or as-printed)";

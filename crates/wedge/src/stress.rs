@@ -62,7 +62,7 @@ impl<T: CachedRules> Case<T> {
         let e = tanh_sinh(
             &upper_start,
             p,
-            TsOptions::new(tol).right_singularity(self.edge_exponent),
+            TsOptions::new(tol).right_end(self.edge_end),
             |pt: &Point<T>| f(&pt.v, &pt.to_b),
         )
         .map_err(|e| from_quad("contact integral", e))?;
@@ -149,7 +149,7 @@ impl<T: CachedRules> Case<T> {
             self.slip_integrand(&pt.v, &pv) - c.clone() * pt.v.clone().powf(&e)
         })
         .map_err(|e| from_quad("apex slip integral", e))?;
-        let opts = TsOptions::new(tol).right_singularity(self.edge_exponent);
+        let opts = TsOptions::new(tol).right_end(self.edge_end);
         let upper = tanh_sinh(&quarter, &p, opts, |pt: &Point<T>| {
             self.slip_integrand(&pt.v, &pt.to_b)
         })
