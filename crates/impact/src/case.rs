@@ -481,7 +481,7 @@ impl ImpactCase {
             )
             .with_edge_gap_scale(self.edge_gap_scale(m64).map(T::of))
             .with_horizon(horizon)
-            .with_memory_limit(self.memory_limit, horizon);
+            .with_memory_limit(self.memory_limit);
             if let Some((n, end)) = target {
                 march = march.with_end(n, end);
             }

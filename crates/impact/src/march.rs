@@ -111,9 +111,9 @@ pub struct March<'a, T: Scalar + CachedRules = f64> {
     /// The exact end time and its step: the last step's time is this value, not n dt rounded
     /// (the reported times end at the requested end exactly).
     end: Option<(usize, T)>,
-    /// The memory limit (bytes) and the steps the history is kept for: a march whose history
-    /// grows beyond the limit ends with an error (`crate::cost`).
-    memory: Option<(f64, usize)>,
+    /// The memory limit (bytes): a march whose history grows beyond it ends with an error
+    /// (`crate::cost`).
+    memory: Option<f64>,
     /// The widest history width checked against the limit so far.
     checked_width: usize,
     /// The factor of the edge model's gap coefficient for the pair of bodies (1 for a
@@ -484,10 +484,11 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         }
     }
 
-    /// Limits the memory of the march's history to `bytes` over `steps` steps
-    /// (`crate::cost::BYTES_PER_CELL_STEP` per step and cell of the history's width).
-    pub(crate) fn with_memory_limit(mut self, bytes: Option<f64>, steps: usize) -> Self {
-        self.memory = bytes.map(|b| (b, steps));
+    /// Limits the memory the march's history holds to `bytes`, checked at every step for its
+    /// steps so far and widest contact (`crate::cost::BYTES_PER_CELL_STEP` per step and cell of
+    /// the history's width).
+    pub(crate) fn with_memory_limit(mut self, bytes: Option<f64>) -> Self {
+        self.memory = bytes;
         self
     }
 
@@ -668,7 +669,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             .max(kin_k(kin_b) + 3)
             .max(edge_cell(b_prev) + 3)
             .min(self.kcap + 2);
-        if let Some((limit, _)) = self.memory {
+        if let Some(limit) = self.memory {
             // the memory the history holds at this step, for its widest contact so far
             let width = (imax + 1)
                 .next_power_of_two()
