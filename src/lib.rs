@@ -1,6 +1,11 @@
-//! Solved wedge-indentation cases as typed reports, for the `wedge` command line, the
-//! `figures` generator and library users.
+//! Dynamic contact mechanics of an elastic half-plane, as a library: the self-similar
+//! indentation by a rigid wedge (crates `wedge`, `genuine`) and the transient impact of
+//! strikers (crates `lamb`, `impact`), each case returned as a typed report
+//! ([`report`]) whose numbers carry their error estimates. The command lines `wedge` and
+//! `impact`, the `figures` generator and other front ends parse their inputs with
+//! [`input`] and print the reports; they compute nothing themselves.
 //!
+//! The wedge:
 //! One constructor, [`build`], solves any solution variant (the paper's construction or the
 //! genuine solution) from the material, the indenter, the contact speed (alpha or V) and the
 //! precision, behind one interface, [`wedge::ContactSolution`]. The report builders
@@ -14,6 +19,10 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod accuracy;
+pub mod cli;
+pub mod error;
+pub mod impact_api;
+pub mod input;
 pub mod report;
 pub mod stability;
 
@@ -25,11 +34,12 @@ use wedge::{
     ContactSolution, Indenter, Material, PaperSolver, Result, Solution, Solver, WedgeError,
 };
 
-pub use report::{
-    print_floor, Entry, FieldReport, Item, Quantity, Selection, SolveReport, StressReport,
-    ADMISSIBILITY_KEYS, ADMISSIBILITY_NOT_COMPUTED, ALWAYS_KEYS, ESTIMATED_KEYS, FIELD_KEYS,
-    SIGN_KEYS, SOLVE_KEYS,
+pub use error::{Error, InputError};
+pub use report::wedge::{
+    CaseInput, FieldReport, Item, Selection, SolveReport, Speed, StressReport, ADMISSIBILITY_KEYS,
+    ADMISSIBILITY_NOT_COMPUTED, ALWAYS_KEYS, ESTIMATED_KEYS, FIELD_KEYS, SIGN_KEYS, SOLVE_KEYS,
 };
+pub use report::{print_floor, Entry, Quantity};
 
 /// Library version, written into every output header.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -53,59 +63,6 @@ pub const DOUBLE_DOUBLE_DIGITS: u32 = 30;
 /// 10^(DOUBLE_DOUBLE_SLACK - d), and otherwise computed again on MPFR at d digits plus
 /// [`GUARD_BITS`] (`docs/double-double.md`).
 pub const DOUBLE_DOUBLE_SLACK: i32 = 3;
-
-/// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s),
-/// as decimal text parsed at the working precision (`f64.into()` for a double).
-#[derive(Clone, Debug, PartialEq)]
-pub enum Speed {
-    /// Contact-zone expansion speed alpha, 0 < alpha < c_R.
-    Alpha(wedge::Param),
-    /// Indenter speed V > 0 (alpha found by the inverse solve).
-    Indenter(wedge::Param),
-}
-
-/// Everything that defines one case.
-#[derive(Clone, Debug)]
-pub struct CaseInput {
-    /// Material.
-    pub material: Material,
-    /// Indenter.
-    pub indenter: Indenter,
-    /// Solution variant.
-    pub solution: Solution,
-    /// Requested significant digits; `None` for the f64 path.
-    pub digits: Option<u32>,
-}
-
-impl CaseInput {
-    /// The working precision: f64, or enough bits for `digits` plus [`GUARD_BITS`].
-    pub fn precision(&self) -> Result<Precision> {
-        match self.digits {
-            None => Ok(Precision::F64),
-            Some(d) => Ok(Precision::from_digits(d, GUARD_BITS)?),
-        }
-    }
-    /// Whether the case is computed in double-double arithmetic: `digits` at most
-    /// [`DOUBLE_DOUBLE_DIGITS`] (any solution variant).
-    pub fn uses_double_double(&self) -> bool {
-        self.digits.is_some_and(|d| d <= DOUBLE_DOUBLE_DIGITS)
-    }
-    /// The arithmetic of the case, for messages: `f64`, `double-double` or `MPFR`.
-    pub fn arithmetic(&self) -> &'static str {
-        match self.digits {
-            None => "f64",
-            Some(_) if self.uses_double_double() && self.solution == Solution::Genuine => {
-                "double-double, or MPFR where it falls short"
-            }
-            Some(_) if self.uses_double_double() => "double-double",
-            Some(_) => "MPFR",
-        }
-    }
-    /// Digits printed: the requested ones, or 16 for the f64 path.
-    pub fn out_digits(&self) -> usize {
-        self.digits.map(|d| d as usize).unwrap_or(16)
-    }
-}
 
 /// A solved case of any solution variant at precision `T`.
 pub type Solved<T> = Box<dyn ContactSolution<T>>;
@@ -416,7 +373,11 @@ impl Job<StressReport> for Stress<'_> {
 /// The contact stress of a case at fractions r/(alpha t) of the contact, in any solution
 /// variant, each value with its estimate.
 pub fn stress(input: &CaseInput, speed: &Speed, at: &[wedge::Param]) -> Result<StressReport> {
-    at_precision(input, &Stress(input, speed, at)).map_err(|e| at_case(input, speed, e))
+    let mut r =
+        at_precision(input, &Stress(input, speed, at)).map_err(|e| at_case(input, speed, e))?;
+    r.input = Some(input.clone());
+    r.speed = Some(speed.clone());
+    Ok(r)
 }
 
 struct Field<'a>(&'a CaseInput, &'a Speed, &'a [(wedge::Param, wedge::Param)]);
@@ -447,5 +408,9 @@ pub fn field(
                 .into(),
         ));
     }
-    at_precision(input, &Field(input, speed, pts)).map_err(|e| at_case(input, speed, e))
+    let mut r =
+        at_precision(input, &Field(input, speed, pts)).map_err(|e| at_case(input, speed, e))?;
+    r.input = Some(input.clone());
+    r.speed = Some(speed.clone());
+    Ok(r)
 }

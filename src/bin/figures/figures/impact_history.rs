@@ -66,17 +66,17 @@ pub fn impact_history(ctx: &Ctx) -> Result<Summary> {
         "impact_history",
         "a free rigid cylinder on the half-plane: penetration, its rate, contact half-width and force against time, both edge laws",
         vec![
-            Column { name: "law", meaning: "signorini (free edge) or kinematic (eq (4), f(b) = h)" },
-            Column { name: "c1t_over_R", meaning: "time c1 t/R" },
-            Column { name: "h_over_R", meaning: "penetration h/R" },
-            Column { name: "hdot_over_v0", meaning: "(dh/dt)/V0" },
-            Column { name: "b_over_R", meaning: "contact half-width b/R" },
-            Column { name: "bdot_over_c1", meaning: "(db/dt)/c1" },
-            Column { name: "stage", meaning: "the edge's speed range" },
-            Column { name: "force_over_rho_c1sq_R", meaning: "contact force per unit length over rho c1^2 R" },
-            Column { name: "err_h_over_R", meaning: "absolute error estimate of h/R (refinement)" },
-            Column { name: "err_b_over_R", meaning: "absolute error estimate of b/R" },
-            Column { name: "err_force_over_rho_c1sq_R", meaning: "absolute error estimate of the force" },
+            Column { name: dyncontact::report::impact::keys::LAW, meaning: "signorini (free edge) or kinematic (eq (4), f(b) = h)" },
+            Column { name: dyncontact::report::impact::keys::C1T_OVER_R, meaning: "time c1 t/R" },
+            Column { name: dyncontact::report::impact::keys::H_OVER_R, meaning: "penetration h/R" },
+            Column { name: dyncontact::report::impact::keys::HDOT_OVER_V0, meaning: "(dh/dt)/V0" },
+            Column { name: dyncontact::report::impact::keys::B_OVER_R, meaning: "contact half-width b/R" },
+            Column { name: dyncontact::report::impact::keys::BDOT_OVER_C1, meaning: "(db/dt)/c1" },
+            Column { name: dyncontact::report::impact::keys::STAGE, meaning: "the edge's speed range" },
+            Column { name: dyncontact::report::impact::keys::FORCE_OVER_RHO_C1SQ_R, meaning: "contact force per unit length over rho c1^2 R" },
+            Column { name: dyncontact::report::impact::keys::ERR_H_OVER_R, meaning: "absolute error estimate of h/R (refinement)" },
+            Column { name: dyncontact::report::impact::keys::ERR_B_OVER_R, meaning: "absolute error estimate of b/R" },
+            Column { name: dyncontact::report::impact::keys::ERR_FORCE_OVER_RHO_C1SQ_R, meaning: "absolute error estimate of the force" },
         ],
     );
     case_param(&mut table, &runs[0].1);
@@ -211,20 +211,20 @@ pub fn impact_pressure(ctx: &Ctx) -> Result<Summary> {
         "contact pressure of a free rigid cylinder over space and time (signorini edge)",
         vec![
             Column {
-                name: "c1t_over_R",
+                name: dyncontact::report::impact::keys::C1T_OVER_R,
                 meaning:
                     "time c1 t/R (every step of the finest grid, thinned to at most 300 times)",
             },
             Column {
-                name: "x_over_R",
+                name: dyncontact::report::impact::keys::X_OVER_R,
                 meaning: "cell centre x/R",
             },
             Column {
-                name: "p_over_rho_c1sq",
+                name: dyncontact::report::impact::keys::P_OVER_RHO_C1SQ,
                 meaning: "cell pressure over rho c1^2 (constant over the cell and the step; it stands for the middle of the step)",
             },
             Column {
-                name: "b_over_R",
+                name: dyncontact::report::impact::keys::B_OVER_R,
                 meaning: "the contact half-width at that time",
             },
         ],

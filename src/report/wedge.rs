@@ -1,6 +1,6 @@
-//! Typed reports of solved cases: what `solve`, `curve`, `stress` and `field` compute, as
-//! values the library returns; serialisation (JSON, CSV, tables) happens in the command
-//! line alone.
+//! Typed reports of solved wedge cases: what `solve`, `curve`, `stress` and `field` compute,
+//! as values the library returns, with the case's inputs ([`CaseInput`], [`Speed`]) beside
+//! them; their JSON, CSV and table forms are written here, from the typed fields.
 //!
 //! Every number is a [`Quantity`]: its decimal text at the digits asked for and its own
 //! absolute error estimate, never optimistic (checked against solves at twice the
@@ -8,106 +8,98 @@
 //! value, or the reason it is unavailable. A required quantity that cannot be computed is an
 //! error naming it: no report carries a non-finite number.
 
-use complexfn::Real;
-use rug::Float;
-use wedge::{ApexRegime, ContactSolution, Result, Solution, WedgeError, WithError};
+use complexfn::{Precision, Real};
+use serde_json::{Map, Value};
+use wedge::{
+    ApexRegime, ContactSolution, Indenter, Material, Result, Solution, WedgeError, WithError,
+};
 
-use crate::CaseInput;
+use super::{not_finite, num, print_floor, ratio, Entry, Quantity};
+use crate::{DOUBLE_DOUBLE_DIGITS, GUARD_BITS};
 
-/// A reported number: the decimal text of its value (the digits printed) and its absolute
-/// error estimate, in the quantity's own units.
+/// The report keys that other code (the figures, other front ends) names: each spelled
+/// once, here; the key lists are made of them.
+pub mod keys {
+    /// `apex_exponent`.
+    pub const APEX_EXPONENT: &str = "apex_exponent";
+    /// `coupling`.
+    pub const COUPLING: &str = "coupling";
+    /// `edge_following_rate_over_speed`.
+    pub const EDGE_FOLLOWING_RATE_OVER_SPEED: &str = "edge_following_rate_over_speed";
+    /// `edge_slip_velocity_over_speed`.
+    pub const EDGE_SLIP_VELOCITY_OVER_SPEED: &str = "edge_slip_velocity_over_speed";
+    /// `gamma`.
+    pub const GAMMA: &str = "gamma";
+    /// `p`.
+    pub const P: &str = "p";
+    /// `r_over_alpha_t`.
+    pub const R_OVER_ALPHA_T: &str = "r_over_alpha_t";
+    /// `regime`.
+    pub const REGIME: &str = "regime";
+    /// `sigma_over_mu_cot_theta`.
+    pub const SIGMA_OVER_MU_COT_THETA: &str = "sigma_over_mu_cot_theta";
+    /// `solution`.
+    pub const SOLUTION: &str = "solution";
+    /// `theta_deg`.
+    pub const THETA_DEG: &str = "theta_deg";
+    /// `v_over_c1_cot_theta`.
+    pub const V_OVER_C1_COT_THETA: &str = "v_over_c1_cot_theta";
+    /// `x_over_c1_t`.
+    pub const X_OVER_C1_T: &str = "x_over_c1_t";
+    /// `y_over_c1_t`.
+    pub const Y_OVER_C1_T: &str = "y_over_c1_t";
+}
+
+/// The contact speed of a case: the contact-zone speed alpha or the indenter speed V (m/s),
+/// as decimal text parsed at the working precision (`f64.into()` for a double).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Quantity {
-    text: String,
-    error: f64,
+pub enum Speed {
+    /// Contact-zone expansion speed alpha, 0 < alpha < c_R.
+    Alpha(wedge::Param),
+    /// Indenter speed V > 0 (alpha found by the inverse solve).
+    Indenter(wedge::Param),
 }
 
-impl Quantity {
-    /// `x` printed to `digits` significant digits, with the estimate `error` (at least
-    /// `floor` |x|, the print floor); an error naming `key` when either is not finite.
-    fn new<T: Real>(key: &str, x: &T, error: f64, floor: f64, digits: usize) -> Result<Self> {
-        if !x.is_finite() {
-            return Err(not_finite(key));
-        }
-        if !error.is_finite() {
-            return Err(not_finite(&format!("the error estimate of {key}")));
-        }
-        Ok(Quantity {
-            text: x.to_decimal(digits),
-            error: error.max(floor * x.to_f64().abs()),
-        })
-    }
-    /// The value as decimal text, with the digits of the report.
-    pub fn text(&self) -> &str {
-        &self.text
-    }
-    /// The value rounded to f64 (use [`Self::text`] or [`Self::to_float`] for the digits
-    /// beyond).
-    pub fn value(&self) -> f64 {
-        self.text.parse().unwrap_or(f64::NAN)
-    }
-    /// The value at `bits` of precision (exactly the printed digits, rounded to `bits`).
-    pub fn to_float(&self, bits: u32) -> Float {
-        match Float::parse(&self.text) {
-            Ok(x) => Float::with_val(bits, x),
-            Err(_) => Float::with_val(bits, f64::NAN),
-        }
-    }
-    /// The absolute error estimate.
-    pub fn error(&self) -> f64 {
-        self.error
-    }
-    /// The same quantity printed to `digits` digits (its estimate kept, at least `floor`
-    /// |value|).
-    fn rounded(&self, digits: usize, floor: f64) -> Quantity {
-        let x = self.to_float(4096);
-        Quantity {
-            text: x.to_decimal(digits),
-            error: self.error.max(floor * self.value().abs()),
-        }
-    }
+/// Everything that defines one case.
+#[derive(Clone, Debug)]
+pub struct CaseInput {
+    /// Material.
+    pub material: Material,
+    /// Indenter.
+    pub indenter: Indenter,
+    /// Solution variant.
+    pub solution: Solution,
+    /// Requested significant digits; `None` for the f64 path.
+    pub digits: Option<u32>,
 }
 
-fn not_finite(key: &str) -> WedgeError {
-    WedgeError::NotFinite {
-        what: key.to_string(),
-    }
-}
-
-/// A quantity that a case may lack: its value, the reason it is unavailable, or left out by
-/// the caller's [`Selection`].
-#[derive(Clone, Debug, PartialEq)]
-pub enum Entry<V> {
-    /// The value.
-    Value(V),
-    /// Why there is no value.
-    Unavailable(String),
-    /// Not computed: the selection left it out.
-    Omitted,
-}
-
-impl<V> Entry<V> {
-    /// The value, if available.
-    pub fn value(&self) -> Option<&V> {
-        match self {
-            Entry::Value(v) => Some(v),
-            _ => None,
+impl CaseInput {
+    /// The working precision: f64, or enough bits for `digits` plus [`GUARD_BITS`].
+    pub fn precision(&self) -> Result<Precision> {
+        match self.digits {
+            None => Ok(Precision::F64),
+            Some(d) => Ok(Precision::from_digits(d, GUARD_BITS)?),
         }
     }
-    /// The reason, if unavailable.
-    pub fn reason(&self) -> Option<&str> {
-        match self {
-            Entry::Unavailable(r) => Some(r),
-            _ => None,
+    /// Whether the case is computed in double-double arithmetic: `digits` at most
+    /// [`DOUBLE_DOUBLE_DIGITS`] (any solution variant).
+    pub fn uses_double_double(&self) -> bool {
+        self.digits.is_some_and(|d| d <= DOUBLE_DOUBLE_DIGITS)
+    }
+    /// The arithmetic of the case, for messages: `f64`, `double-double` or `MPFR`.
+    pub fn arithmetic(&self) -> &'static str {
+        match self.digits {
+            None => "f64",
+            Some(_) if self.uses_double_double() && self.solution == Solution::Genuine => {
+                "double-double, or MPFR where it falls short"
+            }
+            Some(_) if self.uses_double_double() => "double-double",
+            Some(_) => "MPFR",
         }
     }
-    /// The entry of `key` when `sel` wants it (computed by `f`), else [`Entry::Omitted`].
-    fn when(sel: &Selection, key: &str, f: impl FnOnce() -> Self) -> Self {
-        if sel.wants(key) {
-            f()
-        } else {
-            Entry::Omitted
-        }
+    /// Digits printed: the requested ones, or 16 for the f64 path.
+    pub fn out_digits(&self) -> usize {
+        self.digits.map(|d| d as usize).unwrap_or(16)
     }
 }
 
@@ -153,22 +145,22 @@ impl<'a> From<&'a Entry<bool>> for Item<'a> {
 /// The keys of a `solve` report, in order (also the CSV columns of `curve`); the field of
 /// [`SolveReport`] of the same name holds each.
 pub const SOLVE_KEYS: &[&str] = &[
-    "solution",
+    keys::SOLUTION,
     "alpha",
     "speed",
-    "p",
+    keys::P,
     "m",
     "m_r",
     "omega0",
     "s0",
-    "regime",
-    "apex_exponent",
+    keys::REGIME,
+    keys::APEX_EXPONENT,
     "apex_amplitude_over_mu_cot_theta",
     "q_over_c1sq_cot_theta",
-    "v_over_c1_cot_theta",
+    keys::V_OVER_C1_COT_THETA,
     "force_over_a_mu_cot_theta",
-    "edge_slip_velocity_over_speed",
-    "edge_following_rate_over_speed",
+    keys::EDGE_SLIP_VELOCITY_OVER_SPEED,
+    keys::EDGE_FOLLOWING_RATE_OVER_SPEED,
     "apex_u_r_over_speed_t",
     "slip_direction_ok",
     "contact_compressive",
@@ -184,32 +176,32 @@ pub const SOLVE_KEYS: &[&str] = &[
 pub const ESTIMATED_KEYS: &[&str] = &[
     "alpha",
     "speed",
-    "p",
+    keys::P,
     "m",
     "m_r",
     "omega0",
     "s0",
-    "apex_exponent",
+    keys::APEX_EXPONENT,
     "apex_amplitude_over_mu_cot_theta",
     "q_over_c1sq_cot_theta",
-    "v_over_c1_cot_theta",
+    keys::V_OVER_C1_COT_THETA,
     "force_over_a_mu_cot_theta",
-    "edge_slip_velocity_over_speed",
-    "edge_following_rate_over_speed",
+    keys::EDGE_SLIP_VELOCITY_OVER_SPEED,
+    keys::EDGE_FOLLOWING_RATE_OVER_SPEED,
     "apex_u_r_over_speed_t",
 ];
 
 /// The keys every report carries, whatever the [`Selection`]: the inputs, the solution
 /// variant, V (the solve's result), the apex regime and the summary estimate.
 pub const ALWAYS_KEYS: &[&str] = &[
-    "solution",
+    keys::SOLUTION,
     "alpha",
     "speed",
-    "p",
+    keys::P,
     "m",
     "m_r",
-    "regime",
-    "v_over_c1_cot_theta",
+    keys::REGIME,
+    keys::V_OVER_C1_COT_THETA,
     "error_estimate",
     "digits",
 ];
@@ -483,12 +475,6 @@ impl SolveReport {
     }
 }
 
-/// The relative error floor of a value printed to `digits` significant digits and computed
-/// at `bits` bits: half a unit in the last printed digit, or 8 units of round-off.
-pub fn print_floor(digits: usize, bits: u32) -> f64 {
-    (0.5 * 10f64.powi(1 - digits as i32)).max(8.0 * 2f64.powi(-(bits as i32)))
-}
-
 /// Whether `value` is positive beyond its estimate `error`: true above it, false below
 /// -error, unavailable (with the reason) in between, where its sign is not determined.
 fn sign_flag(what: &str, value: f64, error: f64) -> Entry<bool> {
@@ -750,6 +736,10 @@ impl SolveReport {
 /// The contact stress of a case at fractions r/(alpha t) of the contact (`wedge stress`).
 #[derive(Clone, Debug)]
 pub struct StressReport {
+    /// The case's inputs, echoed in the JSON (set by [`crate::stress`]).
+    pub input: Option<CaseInput>,
+    /// The contact speed as given (set by [`crate::stress`]).
+    pub speed: Option<Speed>,
     /// The solution variant.
     pub solution: Solution,
     /// The fractions r/(alpha t), as given.
@@ -795,6 +785,8 @@ impl StressReport {
             out.push(q);
         }
         Ok(StressReport {
+            input: None,
+            speed: None,
             solution: s.solution(),
             r_over_alpha_t: at.to_vec(),
             sigma_over_mu_cot_theta: out,
@@ -806,8 +798,8 @@ impl StressReport {
 
 /// Keys of the `field` report, in order (arrays over the points).
 pub const FIELD_KEYS: &[&str] = &[
-    "x_over_c1_t",
-    "y_over_c1_t",
+    keys::X_OVER_C1_T,
+    keys::Y_OVER_C1_T,
     "sigma_xx_over_mu_cot_theta",
     "sigma_yy_over_mu_cot_theta",
     "sigma_xy_over_mu_cot_theta",
@@ -821,6 +813,10 @@ pub const FIELD_KEYS: &[&str] = &[
 /// point the values of [`FIELD_KEYS`] as decimal text.
 #[derive(Clone, Debug)]
 pub struct FieldReport {
+    /// The case's inputs, echoed in the JSON (set by [`crate::field`]).
+    pub input: Option<CaseInput>,
+    /// The contact speed as given (set by [`crate::field`]).
+    pub speed: Option<Speed>,
     /// The solution variant (the paper's construction).
     pub solution: Solution,
     /// Per point, the values in [`FIELD_KEYS`] order.
@@ -857,10 +853,246 @@ impl FieldReport {
             points.push(vals.map(|v| v.to_decimal(digits)));
         }
         Ok(FieldReport {
+            input: None,
+            speed: None,
             solution: case.solution(),
             points,
             digits,
         })
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// JSON, CSV and tables
+
+/// The JSON value of an item (`None` for one the selection left out).
+fn item_json(it: &Item) -> Option<Value> {
+    Some(match it {
+        Item::Number(q) => num(q.text()),
+        Item::Name(s) => Value::String((*s).into()),
+        Item::Flag(b) => Value::Bool(*b),
+        Item::Ratio(x) => ratio(*x),
+        Item::Count(n) => Value::Number((*n).into()),
+        Item::Unavailable(_) => Value::Null,
+        Item::Omitted => return None,
+    })
+}
+
+/// The keys echoing a case's inputs, in order (after a report's own keys).
+pub const INPUT_KEYS: &[&str] = &["c1", "c2", keys::THETA_DEG, keys::GAMMA, keys::COUPLING];
+
+/// The keys echoing the contact speed as given (one of them).
+pub const SPEED_KEYS: &[&str] = &["alpha", "speed"];
+
+fn inputs_json(o: &mut Map<String, Value>, input: &CaseInput) {
+    o.insert("c1".into(), num(input.material.c1().text()));
+    o.insert("c2".into(), num(input.material.c2().text()));
+    o.insert("theta_deg".into(), num(input.indenter.theta_deg().text()));
+    o.insert("gamma".into(), num(input.indenter.gamma().text()));
+    o.insert(
+        "coupling".into(),
+        Value::String(input.indenter.coupling().name().into()),
+    );
+}
+
+fn echo_json(o: &mut Map<String, Value>, input: &Option<CaseInput>, speed: &Option<Speed>) {
+    if let Some(input) = input {
+        inputs_json(o, input);
+    }
+    match speed {
+        Some(Speed::Alpha(a)) => {
+            o.insert("alpha".into(), num(a.text()));
+        }
+        Some(Speed::Indenter(v)) => {
+            o.insert("speed".into(), num(v.text()));
+        }
+        None => {}
+    }
+}
+
+impl SolveReport {
+    /// The report as a JSON object: the keys of [`SOLVE_KEYS`] it carries (null where
+    /// unavailable, absent where the selection left them out), `error_estimates`
+    /// (absolute, per quantity), `unavailable` (the reasons, when any) and the case's inputs
+    /// ([`INPUT_KEYS`]).
+    pub fn to_json(&self) -> Value {
+        let mut o = Map::new();
+        for (k, it) in &self.items() {
+            if let Some(v) = item_json(it) {
+                o.insert((*k).into(), v);
+            }
+        }
+        let est: Map<String, Value> = self
+            .quantities()
+            .into_iter()
+            .map(|(k, q)| (k.to_string(), ratio(q.error())))
+            .collect();
+        o.insert("error_estimates".into(), Value::Object(est));
+        let why: Map<String, Value> = self
+            .unavailable()
+            .into_iter()
+            .map(|(k, reason)| (k.to_string(), Value::String(reason.into())))
+            .collect();
+        if !why.is_empty() {
+            o.insert("unavailable".into(), Value::Object(why));
+        }
+        inputs_json(&mut o, &self.input);
+        Value::Object(o)
+    }
+
+    /// The report as a two-column table, one key a line (the JSON's keys and values).
+    pub fn to_table(&self) -> String {
+        let Value::Object(map) = self.to_json() else {
+            return String::new();
+        };
+        let w = map.keys().map(|k| k.len()).max().unwrap_or(0);
+        let mut out = String::new();
+        for (k, v) in &map {
+            let s = match v {
+                Value::String(s) => s.clone(),
+                other => other.to_string(),
+            };
+            out.push_str(&format!("{k:<w$}  {s}\n"));
+        }
+        out
+    }
+
+    /// The CSV header of a curve: the [`SOLVE_KEYS`] of the selection, then `err_<key>` for
+    /// its [`ESTIMATED_KEYS`].
+    pub fn csv_header(sel: &Selection) -> String {
+        sel.solve_keys()
+            .iter()
+            .map(|k| k.to_string())
+            .chain(sel.estimated_keys().iter().map(|k| format!("err_{k}")))
+            .collect::<Vec<_>>()
+            .join(",")
+    }
+
+    /// One CSV row of a curve, the columns of [`Self::csv_header`] (empty cells where
+    /// unavailable).
+    pub fn csv_row(&self, sel: &Selection) -> String {
+        let cell = |v: Option<Value>| match v {
+            Some(Value::String(s)) => s,
+            Some(Value::Null) | None => String::new(),
+            Some(v) => v.to_string(),
+        };
+        let keys = sel.solve_keys();
+        let values = self
+            .items()
+            .into_iter()
+            .filter(|(k, _)| keys.contains(k))
+            .map(|(_, it)| cell(item_json(&it)));
+        let errs = sel
+            .estimated_keys()
+            .into_iter()
+            .map(|k| match self.quantity(k) {
+                Some(q) => cell(Some(ratio(q.error()))),
+                None => String::new(),
+            });
+        values.chain(errs).collect::<Vec<_>>().join(",")
+    }
+}
+
+/// The keys of a `stress` report as JSON, in order (then the inputs echoed).
+pub const STRESS_KEYS: &[&str] = &[
+    keys::SOLUTION,
+    keys::R_OVER_ALPHA_T,
+    keys::SIGMA_OVER_MU_COT_THETA,
+    "sigma_error_estimates",
+    "error_estimate",
+    "digits",
+];
+
+impl StressReport {
+    /// The report as a JSON object ([`STRESS_KEYS`], then the inputs echoed).
+    pub fn to_json(&self) -> Value {
+        let mut m = Map::new();
+        m.insert(
+            "solution".into(),
+            Value::String(self.solution.name().into()),
+        );
+        m.insert(
+            "r_over_alpha_t".into(),
+            Value::Array(self.r_over_alpha_t.iter().map(|x| num(x.text())).collect()),
+        );
+        m.insert(
+            "sigma_over_mu_cot_theta".into(),
+            Value::Array(
+                self.sigma_over_mu_cot_theta
+                    .iter()
+                    .map(|q| num(q.text()))
+                    .collect(),
+            ),
+        );
+        m.insert(
+            "sigma_error_estimates".into(),
+            Value::Array(
+                self.sigma_over_mu_cot_theta
+                    .iter()
+                    .map(|q| ratio(q.error()))
+                    .collect(),
+            ),
+        );
+        m.insert("error_estimate".into(), ratio(self.error_estimate));
+        m.insert("digits".into(), Value::Number(self.digits.into()));
+        echo_json(&mut m, &self.input, &self.speed);
+        Value::Object(m)
+    }
+
+    /// The report as a table: a line per fraction, the value and its estimate.
+    pub fn to_table(&self) -> String {
+        let mut out = format!("solution: {}\n", self.solution.name());
+        out.push_str(&format!("{:>16}  sigma/(mu cot Theta)\n", "r/(alpha t)"));
+        for (x, y) in self
+            .r_over_alpha_t
+            .iter()
+            .zip(&self.sigma_over_mu_cot_theta)
+        {
+            out.push_str(&format!(
+                "{:>16}  {}  (+- {:.1e})\n",
+                x.text(),
+                y.text(),
+                y.error()
+            ));
+        }
+        out.push_str(&format!(
+            "relative error estimate: {:.1e}\n",
+            self.error_estimate
+        ));
+        out
+    }
+}
+
+impl FieldReport {
+    /// The report as a JSON object: an array over the points for each of [`FIELD_KEYS`],
+    /// then the inputs echoed.
+    pub fn to_json(&self) -> Value {
+        let mut o = Map::new();
+        o.insert(
+            "solution".into(),
+            Value::String(self.solution.name().into()),
+        );
+        for (i, k) in FIELD_KEYS.iter().enumerate() {
+            let col = self.points.iter().map(|pt| num(&pt[i])).collect();
+            o.insert((*k).into(), Value::Array(col));
+        }
+        o.insert("digits".into(), Value::Number(self.digits.into()));
+        echo_json(&mut o, &self.input, &self.speed);
+        Value::Object(o)
+    }
+
+    /// The report as a table: the keys, then a line per point.
+    pub fn to_table(&self) -> String {
+        let mut out = format!(
+            "solution: {}\n{}\n",
+            self.solution.name(),
+            FIELD_KEYS.join("  ")
+        );
+        for pt in &self.points {
+            out.push_str(&pt.join("  "));
+            out.push('\n');
+        }
+        out
     }
 }
 
@@ -880,7 +1112,7 @@ mod tests {
             solution: Solution::Paper,
             digits: None,
         };
-        let speed = crate::Speed::Alpha(Param::parse("alpha", "500").unwrap());
+        let speed = Speed::Alpha(Param::parse("alpha", "500").unwrap());
         let mut r = crate::solve(&input, &speed, &Selection::without_admissibility()).unwrap();
         let items: Vec<&str> = r.items().into_iter().map(|(k, _)| k).collect();
         assert_eq!(items, SOLVE_KEYS);

@@ -1,4 +1,6 @@
-//! `wedge`: the dynamic wedge-indentation solution from the command line.
+//! `wedge`: the self-similar indentation of an elastic half-plane by a rigid wedge, from the
+//! command line: a thin shell over the `dyncontact` library, which parses the flags and
+//! prints the typed reports (`dyncontact::report::wedge`).
 //!
 //! Units: speeds in m/s, the half-angle in degrees. Outputs are dimensionless and their names
 //! say how: `v_over_c1_cot_theta` = V/(c1 cot Theta), `force_over_a_mu_cot_theta` =
@@ -9,25 +11,18 @@ use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use cli::{
-    check_spacing, field_json, linspace, parse_params, parse_points, parse_range, solve_csv_header,
-    solve_csv_row, solve_json, stress_json,
-};
+use dyncontact::cli::{print, shorten_numbers, usage_error};
+use dyncontact::input::wedge::{check_spacing, linspace, parse_params, parse_points, parse_range};
 use dyncontact::{
-    solve, CaseInput, Selection, SolveReport, Speed, ADMISSIBILITY_KEYS, FIELD_KEYS, SIGN_KEYS,
-    VERSION,
+    solve, CaseInput, Selection, SolveReport, Speed, ADMISSIBILITY_KEYS, SIGN_KEYS, VERSION,
 };
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use rug::Float;
-use serde_json::{Map, Value};
 use wedge::{Coupling, Indenter, Material, Param, Result, Solution, WedgeError};
 
-#[path = "../cli.rs"]
-mod cli;
-
-/// Dynamic indentation of an elastic half-plane by a rigid wedge (plane strain), with
-/// Coulomb friction and tangential-displacement coupling.
+/// The self-similar indentation of an elastic half-plane by a rigid wedge (plane strain, the
+/// wedge paper), with Coulomb friction and tangential-displacement coupling.
 ///
 /// Conventions: c1, c2 dilatational and shear wave speeds (m/s); Theta the wedge half-angle
 /// (degrees); alpha the contact-zone expansion speed (0 < alpha < c_R); V the indenter speed;
@@ -35,7 +30,7 @@ mod cli;
 /// condition u_theta + beta u_r = -V t + r cot Theta. Results are dimensionless: speeds over
 /// c1 or V, stresses over mu cot Theta, displacements over c1 t cot Theta or V t.
 #[derive(Parser, Debug)]
-#[command(name = "wedge", version, about, long_about = None)]
+#[command(name = "wedge", version, about, long_about = None, arg_required_else_help = true)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -247,17 +242,6 @@ fn speed_of(s: &SpeedArgs) -> Result<Speed> {
     }
 }
 
-fn print_table(map: &Map<String, Value>) {
-    let w = map.keys().map(|k| k.len()).max().unwrap_or(0);
-    for (k, v) in map {
-        let s = match v {
-            Value::String(s) => s.clone(),
-            other => other.to_string(),
-        };
-        println!("{k:<w$}  {s}");
-    }
-}
-
 fn header_lines(input: &CaseInput) -> Vec<String> {
     let args: Vec<String> = std::env::args().collect();
     vec![
@@ -330,11 +314,10 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
             let r = solve(&inp, &speed_of(&speed)?, &select.selection()?)?;
-            let v = solve_json(&r);
             if out.json {
-                println!("{v}");
-            } else if let Value::Object(m) = v {
-                print_table(&m);
+                print(&format!("{}\n", r.to_json()));
+            } else {
+                print(&r.to_table());
             }
         }
         Command::Stress {
@@ -347,14 +330,9 @@ fn run(cli: Cli) -> Result<()> {
             let at = parse_params("at", &at)?;
             let r = dyncontact::stress(&inp, &speed_of(&speed)?, &at)?;
             if out.json {
-                println!("{}", stress_json(&r));
+                print(&format!("{}\n", r.to_json()));
             } else {
-                println!("solution: {}", r.solution.name());
-                println!("{:>16}  sigma/(mu cot Theta)", "r/(alpha t)");
-                for (x, y) in r.r_over_alpha_t.iter().zip(&r.sigma_over_mu_cot_theta) {
-                    println!("{:>16}  {}  (+- {:.1e})", x.text(), y.text(), y.error());
-                }
-                println!("relative error estimate: {:.1e}", r.error_estimate);
+                print(&r.to_table());
             }
         }
         Command::Field {
@@ -367,13 +345,9 @@ fn run(cli: Cli) -> Result<()> {
             let pts = parse_points("at", &at)?;
             let r = dyncontact::field(&inp, &speed_of(&speed)?, &pts)?;
             if out.json {
-                println!("{}", field_json(&r));
+                print(&format!("{}\n", r.to_json()));
             } else {
-                println!("solution: {}", r.solution.name());
-                println!("{}", FIELD_KEYS.join("  "));
-                for pt in &r.points {
-                    println!("{}", pt.join("  "));
-                }
+                print(&r.to_table());
             }
         }
         Command::Curve {
@@ -421,7 +395,7 @@ fn run(cli: Cli) -> Result<()> {
                 if let Some(l) = flags_header(&sel) {
                     writeln!(lock, "{l}").ok();
                 }
-                writeln!(lock, "{}", solve_csv_header(&sel)).ok();
+                writeln!(lock, "{}", SolveReport::csv_header(&sel)).ok();
             }
             let mut first = true;
             for chunk in alphas.chunks(CURVE_CHUNK) {
@@ -448,9 +422,9 @@ fn run(cli: Cli) -> Result<()> {
                     };
                     if json {
                         let sep = if first { "" } else { "," };
-                        write!(lock, "{sep}{}", solve_json(&r)).ok();
+                        write!(lock, "{sep}{}", r.to_json()).ok();
                     } else {
-                        writeln!(lock, "{}", solve_csv_row(&r, &sel)).ok();
+                        writeln!(lock, "{}", r.csv_row(&sel)).ok();
                         // a flag that could not be computed: why, after its row
                         for (k, why) in r.unavailable() {
                             if ADMISSIBILITY_KEYS.contains(&k) || SIGN_KEYS.contains(&k) {
@@ -465,7 +439,11 @@ fn run(cli: Cli) -> Result<()> {
                     }
                     first = false;
                 }
-                lock.flush().ok();
+                if lock.flush().is_err() {
+                    // the reader has gone (a closed pipe): stop quietly
+                    bar.finish_and_clear();
+                    return Ok(());
+                }
             }
             if json {
                 writeln!(lock, "]").ok();
@@ -480,22 +458,22 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => {
-            if !e.use_stderr() {
-                // --help, --version
-                let _ = e.print();
-                return ExitCode::SUCCESS;
-            }
-            // one line: clap's first line, without the usage block
-            let text = e.to_string();
-            let first = text.lines().next().unwrap_or("invalid arguments");
-            eprintln!("wedge: {}", first.trim_start_matches("error: "));
-            return ExitCode::from(2);
+            return match usage_error("wedge", &e) {
+                None => {
+                    let _ = e.print();
+                    ExitCode::SUCCESS
+                }
+                Some(line) => {
+                    eprintln!("{}", line.trim_end());
+                    ExitCode::from(2)
+                }
+            };
         }
     };
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("wedge: {e}");
+            eprintln!("wedge: {}", shorten_numbers(&e.to_string()));
             ExitCode::from(2)
         }
     }

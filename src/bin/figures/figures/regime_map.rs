@@ -75,15 +75,15 @@ pub fn regime_map(ctx: &Ctx) -> Result<Summary> {
         "the paper's apex regime and exponent 2 Omega0 over (Theta, gamma), coupled contact",
         vec![
             Column {
-                name: "theta_deg",
+                name: dyncontact::report::wedge::keys::THETA_DEG,
                 meaning: "wedge half-angle Theta in degrees",
             },
             Column {
-                name: "gamma",
+                name: dyncontact::report::wedge::keys::GAMMA,
                 meaning: "friction coefficient",
             },
             Column {
-                name: "regime",
+                name: dyncontact::report::wedge::keys::REGIME,
                 meaning: "finite (gamma < cot Theta), logarithmic (=), power (>)",
             },
             Column {

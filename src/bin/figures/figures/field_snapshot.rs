@@ -325,11 +325,11 @@ pub fn field_snapshot(ctx: &Ctx) -> Result<Summary> {
         "interior stresses over the half-plane at c1 t = 1 (fields depend on x/(c1 t), y/(c1 t) only)",
         vec![
             Column {
-                name: "x_over_c1_t",
+                name: dyncontact::report::wedge::keys::X_OVER_C1_T,
                 meaning: "x/(c1 t), along the surface (cell centre)",
             },
             Column {
-                name: "y_over_c1_t",
+                name: dyncontact::report::wedge::keys::Y_OVER_C1_T,
                 meaning: "y/(c1 t), out of the body (y < 0 in the body; cell centre)",
             },
             Column {

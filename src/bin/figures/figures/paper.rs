@@ -141,11 +141,11 @@ pub fn fig3(ctx: &Ctx) -> Result<Summary> {
         "tangential velocity at the contact edge r = alpha t against the contact speed alpha",
         vec![
             Column {
-                name: "solution",
+                name: dyncontact::report::wedge::keys::SOLUTION,
                 meaning: "solution variant",
             },
             Column {
-                name: "p",
+                name: dyncontact::report::wedge::keys::P,
                 meaning: "p = alpha/c1 (input of the case)",
             },
             Column {
@@ -153,15 +153,15 @@ pub fn fig3(ctx: &Ctx) -> Result<Summary> {
                 meaning: "alpha/c2",
             },
             Column {
-                name: "v_over_c1_cot_theta",
+                name: dyncontact::report::wedge::keys::V_OVER_C1_COT_THETA,
                 meaning: "indenter speed V/(c1 cot Theta)",
             },
             Column {
-                name: "edge_slip_velocity_over_speed",
+                name: dyncontact::report::wedge::keys::EDGE_SLIP_VELOCITY_OVER_SPEED,
                 meaning: "particle velocity (du_r/dt)(r = alpha t)/V (docs/errata.md, section 5)",
             },
             Column {
-                name: "edge_following_rate_over_speed",
+                name: dyncontact::report::wedge::keys::EDGE_FOLLOWING_RATE_OVER_SPEED,
                 meaning: "the paper's Fig. 3 expression: u_r(alpha t, t)/(V t)",
             },
         ],
@@ -313,23 +313,23 @@ fn speed_figure(
         "contact-zone speed alpha against indenter speed V",
         vec![
             Column {
-                name: "theta_deg",
+                name: dyncontact::report::wedge::keys::THETA_DEG,
                 meaning: "wedge half-angle Theta in degrees",
             },
             Column {
-                name: "gamma",
+                name: dyncontact::report::wedge::keys::GAMMA,
                 meaning: "friction coefficient",
             },
             Column {
-                name: "coupling",
+                name: dyncontact::report::wedge::keys::COUPLING,
                 meaning: "on: beta = -cot Theta; off: beta = 0",
             },
             Column {
-                name: "solution",
+                name: dyncontact::report::wedge::keys::SOLUTION,
                 meaning: "solution variant",
             },
             Column {
-                name: "p",
+                name: dyncontact::report::wedge::keys::P,
                 meaning: "p = alpha/c1 (input of the case)",
             },
             Column {
@@ -337,7 +337,7 @@ fn speed_figure(
                 meaning: "alpha/c2",
             },
             Column {
-                name: "v_over_c1_cot_theta",
+                name: dyncontact::report::wedge::keys::V_OVER_C1_COT_THETA,
                 meaning: "V/(c1 cot Theta)",
             },
             Column {
@@ -618,15 +618,15 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
                 meaning: "contact (along the contact) or apex (log-log, near the apex)",
             },
             Column {
-                name: "gamma",
+                name: dyncontact::report::wedge::keys::GAMMA,
                 meaning: "friction coefficient",
             },
             Column {
-                name: "solution",
+                name: dyncontact::report::wedge::keys::SOLUTION,
                 meaning: "solution variant (paper or genuine)",
             },
             Column {
-                name: "regime",
+                name: dyncontact::report::wedge::keys::REGIME,
                 meaning: "the apex regime of this row's solution",
             },
             Column {
@@ -634,11 +634,11 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
                 meaning: "2 Omega0, the apex exponent of the paper's solution",
             },
             Column {
-                name: "apex_exponent",
+                name: dyncontact::report::wedge::keys::APEX_EXPONENT,
                 meaning: "lambda of sigma ~ r^(-lambda) at the apex for this row's solution (2 Omega0 for paper; the largest eigen-equation root for genuine)",
             },
             Column {
-                name: "r_over_alpha_t",
+                name: dyncontact::report::wedge::keys::R_OVER_ALPHA_T,
                 meaning: "r/(alpha t)",
             },
             Column {
@@ -646,7 +646,7 @@ fn stress_figure(ctx: &Ctx, name: &'static str, fig: u32, theta: f64) -> Result<
                 meaning: "x = r/(c1 t) = p r/(alpha t) (input of stress_hat)",
             },
             Column {
-                name: "sigma_over_mu_cot_theta",
+                name: dyncontact::report::wedge::keys::SIGMA_OVER_MU_COT_THETA,
                 meaning: "sigma_theta/(mu cot Theta)",
             },
             Column {

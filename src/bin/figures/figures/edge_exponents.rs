@@ -37,9 +37,9 @@ pub fn edge_exponents(ctx: &Ctx) -> Result<Summary> {
         "edge_exponents",
         "power lambda of the contact pressure p ~ d^lambda at an edge moving at D (d the distance from the edge into the contact)",
         vec![
-            Column { name: "poisson", meaning: "Poisson's ratio nu" },
-            Column { name: "speed_over_c1", meaning: "edge speed D/c1" },
-            Column { name: "range", meaning: "sub-rayleigh, rayleigh-shear, transonic or supersonic" },
+            Column { name: dyncontact::report::impact::keys::POISSON, meaning: "Poisson's ratio nu" },
+            Column { name: dyncontact::report::impact::keys::SPEED_OVER_C1, meaning: "edge speed D/c1" },
+            Column { name: dyncontact::report::impact::keys::RANGE, meaning: "sub-rayleigh, rayleigh-shear, transonic or supersonic" },
             Column { name: "exponent_low", meaning: "the lower admissible exponent" },
             Column { name: "exponent_high", meaning: "the upper admissible exponent (empty where a single local solution exists)" },
             Column { name: "selected_signorini", meaning: "the exponent a free edge selects (signorini law)" },

@@ -16,12 +16,11 @@
 //! Errors (an unknown figure name, a bad flag) are one line on stderr with exit code 2; a
 //! figure that fails to compute or write is reported on one line and the exit code is 1.
 //!
-//! Adding a figure: a function `fn(&Ctx) -> Result<Summary>` in a module under `src/figures/`
-//! (declared in `src/figures/mod.rs`) that builds a `Table` (CSV) and a `Page` (PNG, SVG),
+//! Adding a figure: a function `fn(&Ctx) -> Result<Summary>` in a module under `src/bin/figures/figures/`
+//! (declared in `src/bin/figures/figures/mod.rs`) that builds a `Table` (CSV) and a `Page` (PNG, SVG),
 //! and one [`Entry`] in [`FIGURES`]. Adding a solution variant to fig3 and fig5: one entry in
 //! `figures::VARIANTS`.
 
-#[path = "../figures/mod.rs"]
 mod figures;
 
 use std::collections::BTreeSet;

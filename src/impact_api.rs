@@ -1,0 +1,505 @@
+//! The impact engine's calls, inputs in and typed reports out: [`run`] (a striker's
+//! transient impact, [`RunReport`]), [`green`] (Lamb's surface influence functions,
+//! [`GreenReport`]) and [`edge`] (the pressure's power law at a moving contact edge,
+//! [`EdgeReport`]). Their inputs ([`RunInput`], [`GreenInput`], [`EdgeInput`]) hold the
+//! command line's flags by name, as text or numbers; a bad one is an [`Error::Input`] naming
+//! it.
+// `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use complexfn::quadrature::CachedRules;
+use complexfn::{Dd, Precision, Real};
+use impact::{EdgeLaw, ImpactCase, Stop};
+use lamb::HalfPlane;
+use rug::Float;
+
+use crate::error::{Error, InputError};
+use crate::input::impact as spec;
+use crate::report::impact::{EdgeReport, GreenReport, RunReport};
+
+/// The most digits a run gives: the march runs in double-double (about 32 digits) above
+/// f64.
+pub const MAX_DIGITS: u32 = 30;
+
+type R<T> = std::result::Result<T, Error>;
+
+/// The inputs of an impact run, named as the command line's flags (`impact run --help`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunInput {
+    /// The half-plane's P-wave speed c1 in m/s (with `c2`).
+    pub c1: Option<f64>,
+    /// The half-plane's S-wave speed c2 in m/s (with `c1`).
+    pub c2: Option<f64>,
+    /// Poisson's ratio (instead of `c1`, `c2`).
+    pub poisson: Option<f64>,
+    /// The striker: `rigid`, `elastic:c1=..,c2=..,density_ratio=..` or
+    /// `shell:thickness_over_R=..,c1=..,c2=..,density_ratio=..`.
+    pub striker: String,
+    /// The profile: `circle:R=..`, `parabola:R=..`, `power:A=..,k=..`, `wedge:theta_deg=..`,
+    /// `flat:a=..` or `table:FILE`.
+    pub profile: String,
+    /// m0/(rho R^2) of a free striker.
+    pub mass_ratio: Option<f64>,
+    /// V0/c1 of a free striker.
+    pub v0_over_c1: Option<f64>,
+    /// A prescribed penetration: `speed:V_over_c1=..` or `table:FILE`.
+    pub driven: Option<String>,
+    /// The edge law: `signorini` or `kinematic`.
+    pub law: String,
+    /// The end: `c1t/R=VALUE`, `separation` or `separation:max=VALUE`.
+    pub end: String,
+    /// The length scale R in metres of the flat punch, the wedge, the power law and a table.
+    pub length: Option<f64>,
+    /// dx/R of the finest grid.
+    pub dx: f64,
+    /// kappa = c1 dt/dx.
+    pub kappa: f64,
+    /// Grid levels (1 to 4).
+    pub levels: usize,
+    /// The edge cell: `model` or `whole`.
+    pub edge_cell: String,
+    /// Pressure profiles at `c1t/R=T1,T2,...`.
+    pub pressure_at: Option<String>,
+    /// Significant digits (1 to [`MAX_DIGITS`], the march in double-double); `None` for f64.
+    pub digits: Option<u32>,
+    /// Run even above the memory limit.
+    pub force: bool,
+    /// The memory limit in GiB.
+    pub memory_limit_gib: f64,
+}
+
+impl Default for RunInput {
+    /// The command line's defaults: a rigid striker, Signorini's conditions, dx/R = 0.005,
+    /// kappa = 2, three levels, the edge model, the default memory limit; the material, the
+    /// profile, the drive and the end left to the caller.
+    fn default() -> Self {
+        RunInput {
+            c1: None,
+            c2: None,
+            poisson: None,
+            striker: "rigid".into(),
+            profile: String::new(),
+            mass_ratio: None,
+            v0_over_c1: None,
+            driven: None,
+            law: "signorini".into(),
+            end: String::new(),
+            length: None,
+            dx: 0.005,
+            kappa: 2.0,
+            levels: 3,
+            edge_cell: "model".into(),
+            pressure_at: None,
+            digits: None,
+            force: false,
+            memory_limit_gib: impact::cost::DEFAULT_MEMORY_LIMIT_GIB,
+        }
+    }
+}
+
+fn impact_law(law: &str) -> R<EdgeLaw> {
+    match law {
+        "signorini" => Ok(EdgeLaw::Signorini),
+        "kinematic" => Ok(EdgeLaw::Kinematic),
+        other => Err(InputError::new(
+            "law",
+            format!("invalid --law {other:?}: signorini or kinematic"),
+        )
+        .into()),
+    }
+}
+
+impl RunInput {
+    /// The case these inputs describe (checked by the engine when it is solved).
+    pub fn case(&self) -> R<ImpactCase> {
+        self.check_missing()?;
+        let nu = spec::poisson(self.c1, self.c2, self.poisson)?;
+        let c1 = match (self.c1, self.c2, self.poisson) {
+            (Some(c1), Some(_), None) => Some(c1),
+            _ => None,
+        };
+        let striker = spec::striker(&self.striker, c1)?;
+        let prof = spec::profile(&self.profile, self.length)?;
+        let law = impact_law(&self.law)?;
+        let (end, stop) = spec::end(&self.end)?;
+        let drive = spec::drive(
+            self.driven.as_deref(),
+            self.mass_ratio,
+            self.v0_over_c1,
+            &striker,
+        )?;
+        if stop == Stop::AtSeparation && !matches!(drive, impact::Drive::Free { .. }) {
+            return Err(InputError::new(
+                "end",
+                "invalid --end separation: only a free striker separates (give --mass-ratio and --v0-over-c1, or an end time c1t/R=VALUE)",
+            )
+            .into());
+        }
+        let mut c = ImpactCase::new(nu, prof, drive, law, end).with_striker(striker);
+        c.stop = stop;
+        c.dx = self.dx;
+        c.kappa = self.kappa;
+        c.levels = self.levels;
+        c.edge_model = match self.edge_cell.as_str() {
+            "model" => true,
+            "whole" => false,
+            other => {
+                return Err(InputError::new(
+                    "edge_cell",
+                    format!("invalid --edge-cell {other}: admissible values are model, whole"),
+                )
+                .into())
+            }
+        };
+        Ok(c)
+    }
+
+    /// Every input missing, named in one error (the first one's parameter).
+    fn check_missing(&self) -> R<()> {
+        let mut missing: Vec<(&'static str, &str)> = Vec::new();
+        if self.c1.is_none() && self.c2.is_none() && self.poisson.is_none() {
+            missing.push(("poisson", "--poisson (or --c1 and --c2)"));
+        }
+        if self.profile.is_empty() {
+            missing.push(("profile", "--profile"));
+        }
+        let shell = self.striker.starts_with("shell:");
+        if self.driven.is_none() && self.v0_over_c1.is_none() {
+            if self.mass_ratio.is_none() && !shell {
+                missing.push(("mass_ratio", "--mass-ratio and --v0-over-c1 (or --driven)"));
+            } else {
+                missing.push(("v0_over_c1", "--v0-over-c1 (or --driven)"));
+            }
+        } else if self.driven.is_none() && self.mass_ratio.is_none() && !shell {
+            missing.push(("mass_ratio", "--mass-ratio (or --driven)"));
+        }
+        if self.end.is_empty() {
+            missing.push(("end", "--end"));
+        }
+        match missing.first() {
+            None => Ok(()),
+            Some((parameter, _)) => Err(InputError::new(
+                parameter,
+                format!(
+                    "missing {}",
+                    missing.iter().map(|m| m.1).collect::<Vec<_>>().join("; ")
+                ),
+            )
+            .into()),
+        }
+    }
+
+    /// The times of the pressure profiles asked for.
+    pub fn pressure_times(&self) -> R<Vec<f64>> {
+        match &self.pressure_at {
+            None => Ok(Vec::new()),
+            Some(s) => Ok(spec::time_list("pressure_at", s, "--pressure-at")?),
+        }
+    }
+}
+
+/// Runs the impact of `input`, calling `progress` as the march goes on, and reports it.
+///
+/// Refused before any work: a bad input (naming it), `digits` outside 1 to [`MAX_DIGITS`], a
+/// pressure time outside the run, and a run whose estimated memory exceeds
+/// `memory_limit_gib` without `force` (to the separation, the march checks the width the
+/// contact reaches as it goes).
+pub fn run(input: &RunInput, progress: impl FnMut(impact::Progress)) -> R<RunReport> {
+    let mut c = input.case()?;
+    if !(input.memory_limit_gib.is_finite() && input.memory_limit_gib > 0.0) {
+        return Err(InputError::new(
+            "memory_limit_gib",
+            format!(
+                "invalid --memory-limit-gib {}: admissible range is (0, inf)",
+                input.memory_limit_gib
+            ),
+        )
+        .into());
+    }
+    let times = input.pressure_times()?;
+    for &t in &times {
+        if !(t > 0.0 && t <= c.end) {
+            return Err(InputError::new(
+                "pressure_at",
+                format!(
+                    "invalid --pressure-at time {t}: admissible range is (0, {}], the run's times",
+                    c.end
+                ),
+            )
+            .into());
+        }
+    }
+    if let Some(d) = input.digits {
+        if !(1..=MAX_DIGITS).contains(&d) {
+            return Err(InputError::new(
+                "digits",
+                format!(
+                    "invalid --digits {d}: admissible range is 1..={MAX_DIGITS} (the march runs in double-double above f64)"
+                ),
+            )
+            .into());
+        }
+    }
+    if !input.force {
+        c.memory_limit = Some(input.memory_limit_gib * 1024.0 * 1024.0 * 1024.0);
+    }
+    let cost = c.cost_estimate();
+    // to an end time the estimate bounds the run; to the separation its cap does, and the
+    // march checks the width the contact reaches
+    if cost.gib() > input.memory_limit_gib && !input.force && c.stop == Stop::AtEnd {
+        return Err(InputError::new(
+            "dx",
+            format!(
+                "the run would take about {:.1} GiB ({} steps by {} cells on the finest grid), above the limit of {} GiB: raise --dx, shorten --end, or pass --force (or --memory-limit-gib)",
+                cost.gib(),
+                cost.steps,
+                cost.width,
+                input.memory_limit_gib
+            ),
+        )
+        .into());
+    }
+    let version = crate::VERSION;
+    let report = match input.digits {
+        None => {
+            let sol = c.solve_reporting::<f64>(progress)?;
+            let (mut r, rows) = RunReport::of(&sol, version, None, &times).map_err(to_error)?;
+            r.add_shell_energy(&sol, &rows).map_err(to_error)?;
+            r
+        }
+        Some(d) => {
+            let sol = c.solve_reporting::<Dd>(progress)?;
+            RunReport::of(&sol, version, Some(d as usize), &times)
+                .map_err(to_error)?
+                .0
+        }
+    };
+    Ok(report)
+}
+
+/// A report's own refusal (a pressure time beyond the run's last step), or a failure.
+fn to_error(message: String) -> Error {
+    InputError::new("pressure_at", message).into()
+}
+
+/// The inputs of `impact green`, named as its flags; numbers as decimal text, parsed at the
+/// working precision.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GreenInput {
+    /// The P-wave speed c1 in m/s (with `c2`).
+    pub c1: Option<String>,
+    /// The S-wave speed c2 in m/s (with `c1`).
+    pub c2: Option<String>,
+    /// Poisson's ratio (instead of `c1`, `c2`).
+    pub poisson: Option<String>,
+    /// Points s = |x|/(c1 t) > 0, comma-separated.
+    pub at: Option<String>,
+    /// Cells `sa:sb`, comma-separated, 0 <= sa <= sb.
+    pub cells: Option<String>,
+    /// The Rayleigh constants.
+    pub constants: bool,
+    /// Significant digits (MPFR); `None` for f64.
+    pub digits: Option<u32>,
+}
+
+fn parse_num<T: Real>(parameter: &'static str, name: &str, text: &str, bits: u32) -> R<T> {
+    let v = T::parse_prec(text, bits).map_err(|_| {
+        InputError::new(
+            parameter,
+            format!("invalid {name} = {text:?}: not a number"),
+        )
+    })?;
+    if !v.is_finite() {
+        return Err(InputError::new(
+            parameter,
+            format!("invalid {name} = {text}: must be finite"),
+        )
+        .into());
+    }
+    Ok(v)
+}
+
+fn split_list(parameter: &'static str, name: &str, text: &str) -> R<Vec<String>> {
+    let items: Vec<String> = text.split(',').map(|s| s.trim().to_string()).collect();
+    if items.iter().any(|s| s.is_empty()) {
+        return Err(InputError::new(
+            parameter,
+            format!("invalid {name} = {text:?}: a comma-separated list of numbers"),
+        )
+        .into());
+    }
+    Ok(items)
+}
+
+/// The half-plane from `c1`/`c2` or `poisson` at the precision of `bits`.
+fn half_plane<T: CachedRules>(a: &GreenInput, bits: u32) -> R<HalfPlane<T>> {
+    match (&a.c1, &a.c2, &a.poisson) {
+        (None, None, Some(nu)) => {
+            let nu: T = parse_num("poisson", "--poisson", nu, bits)?;
+            Ok(HalfPlane::from_poisson(nu)?)
+        }
+        (Some(c1), Some(c2), None) => {
+            let c1: T = parse_num("c1", "--c1", c1, bits)?;
+            let c2: T = parse_num("c2", "--c2", c2, bits)?;
+            if c1.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+                || c2.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater)
+            {
+                return Err(InputError::new(
+                    "c1",
+                    format!(
+                        "invalid --c1, --c2 = {}, {}: wave speeds must be > 0 m/s",
+                        c1.to_f64(),
+                        c2.to_f64()
+                    ),
+                )
+                .into());
+            }
+            Ok(HalfPlane::new(c2 / &c1)?)
+        }
+        (c1, c2, nu) => {
+            // the same refusals as a run's material
+            let some = |x: &Option<String>| x.as_ref().map(|_| 1.0);
+            spec::poisson(some(c1), some(c2), some(nu))?;
+            unreachable!("the material flags were refused above")
+        }
+    }
+}
+
+fn green_at<T: CachedRules>(a: &GreenInput, bits: u32, digits: usize) -> R<GreenReport> {
+    let hp: HalfPlane<T> = half_plane(a, bits)?;
+    if a.at.is_none() && a.cells.is_none() && !a.constants {
+        return Err(InputError::new(
+            "at",
+            "nothing asked: give --at s1,s2,..., --cells sa:sb,... or --constants",
+        )
+        .into());
+    }
+    let at = match &a.at {
+        None => None,
+        Some(at) => {
+            let mut points = Vec::new();
+            for text in split_list("at", "--at", at)? {
+                let s: T = parse_num("at", "s", &text, bits)?;
+                if s == 0.0 {
+                    return Err(InputError::new(
+                        "at",
+                        "invalid s = 0: admissible range is (0, inf) for pointwise values (the step responses diverge at s = 0, i.e. at x = 0 or t -> inf)",
+                    )
+                    .into());
+                }
+                points.push(s);
+            }
+            Some(points)
+        }
+    };
+    let cells = match &a.cells {
+        None => None,
+        Some(cells) => {
+            let mut list = Vec::new();
+            for text in split_list("cells", "--cells", cells)? {
+                let (sa, sb) = text.split_once(':').ok_or_else(|| {
+                    InputError::new(
+                        "cells",
+                        format!("invalid cell {text:?}: write sa:sb with 0 <= sa <= sb"),
+                    )
+                })?;
+                let sa: T = parse_num("cells", "sa", sa, bits)?;
+                let sb: T = parse_num("cells", "sb", sb, bits)?;
+                if sa > sb || sa < 0.0 {
+                    return Err(InputError::new(
+                        "cells",
+                        format!("invalid cell {text}: admissible range is 0 <= sa <= sb"),
+                    )
+                    .into());
+                }
+                list.push((sa, sb));
+            }
+            Some(list)
+        }
+    };
+    Ok(GreenReport::of(
+        &hp,
+        bits,
+        digits,
+        at.as_deref(),
+        cells.as_deref(),
+        a.constants,
+        crate::VERSION,
+    )?)
+}
+
+/// Lamb's surface influence functions of the half-plane of `input` at its points and cells,
+/// and its Rayleigh constants: f64 (17 digits printed) or `digits` digits in MPFR.
+pub fn green(input: &GreenInput) -> R<GreenReport> {
+    match input.digits {
+        None => green_at::<f64>(input, 53, 17),
+        Some(d) => {
+            let p = Precision::from_digits(d, 24)
+                .map_err(|e| InputError::new("digits", e.to_string()))?;
+            green_at::<Float>(input, p.bits(), d as usize)
+        }
+    }
+}
+
+/// The inputs of `impact edge`, named as its flags.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EdgeInput {
+    /// The P-wave speed c1 in m/s (with `c2`).
+    pub c1: Option<f64>,
+    /// The S-wave speed c2 in m/s (with `c1`).
+    pub c2: Option<f64>,
+    /// Poisson's ratio (instead of `c1`, `c2`).
+    pub poisson: Option<f64>,
+    /// Edge speeds D/c1, comma-separated.
+    pub speed_over_c1: Option<String>,
+    /// The edge law: `signorini` or `kinematic`.
+    pub law: String,
+}
+
+impl Default for EdgeInput {
+    /// No material and no speeds; Signorini's law.
+    fn default() -> Self {
+        EdgeInput {
+            c1: None,
+            c2: None,
+            poisson: None,
+            speed_over_c1: None,
+            law: "signorini".into(),
+        }
+    }
+}
+
+/// The local behaviour of the contact pressure at an edge moving at each speed of `input`.
+pub fn edge(input: &EdgeInput) -> R<EdgeReport> {
+    let nu = spec::poisson(input.c1, input.c2, input.poisson)?;
+    let hp = HalfPlane::from_poisson(nu)?;
+    let law = match input.law.as_str() {
+        "signorini" => lamb::edge::EdgeLaw::Signorini,
+        "kinematic" => lamb::edge::EdgeLaw::Kinematic,
+        other => {
+            return Err(InputError::new(
+                "law",
+                format!("invalid --law = {other}: admissible values are signorini, kinematic"),
+            )
+            .into())
+        }
+    };
+    let list = input.speed_over_c1.as_deref().ok_or_else(|| {
+        InputError::new(
+            "speed_over_c1",
+            "missing --speed-over-c1 D1,D2,... (edge speeds over c1)",
+        )
+    })?;
+    let speeds = list
+        .split(',')
+        .map(|item| {
+            item.trim().parse::<f64>().map_err(|_| {
+                InputError::new(
+                    "speed_over_c1",
+                    format!("invalid --speed-over-c1 entry '{item}': not a number"),
+                )
+            })
+        })
+        .collect::<std::result::Result<Vec<f64>, _>>()?;
+    Ok(EdgeReport::of(&hp, law, &speeds, crate::VERSION)?)
+}

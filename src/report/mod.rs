@@ -1,0 +1,166 @@
+//! Typed reports of both engines, the values the library returns: the wedge's
+//! ([`wedge::SolveReport`], [`wedge::StressReport`], [`wedge::FieldReport`]) and the impact
+//! engine's ([`impact::RunReport`], [`impact::GreenReport`], [`impact::EdgeReport`]).
+//!
+//! What every report shares lives here: a number with its error estimate ([`Quantity`] for
+//! the wedge's decimal text, [`Number`] for the impact's columns), a quantity that may be
+//! unavailable with its reason ([`Entry`]), the print floor, and the JSON numbers. Each report
+//! has one ordered key list (`SOLVE_KEYS`, `RUN_KEYS`, ...) and is written as JSON and CSV in
+//! its own module, from its typed fields: the command lines and the figures only print.
+
+use ::wedge::{Result, WedgeError};
+use complexfn::Real;
+use rug::Float;
+use serde_json::{json, Number as JsonNumber, Value};
+
+pub mod impact;
+pub mod wedge;
+
+use self::wedge::Selection;
+
+/// A JSON number with exactly the digits given (arbitrary precision); null for text that is
+/// not a number.
+pub fn num(s: &str) -> Value {
+    match s.parse::<JsonNumber>() {
+        Ok(n) => Value::Number(n),
+        Err(_) => Value::Null,
+    }
+}
+
+/// An f64 (an error estimate) as a JSON number in scientific notation.
+pub fn ratio(x: f64) -> Value {
+    num(&format!("{x:e}"))
+}
+
+/// A number of a report: its value in f64 and, when the report was asked for more digits
+/// than f64 holds, its decimal text to those digits.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Number {
+    /// The value, rounded to f64.
+    pub value: f64,
+    /// The decimal text at the digits asked for (`None`: the f64 is the value).
+    pub text: Option<String>,
+}
+
+impl Number {
+    /// The JSON number: the decimal text when there is one, else the f64.
+    pub fn json(&self) -> Value {
+        match &self.text {
+            None => json!(self.value),
+            Some(t) => num(t),
+        }
+    }
+    /// The CSV cell: the JSON number's text.
+    pub fn cell(&self) -> String {
+        self.json().to_string()
+    }
+}
+
+/// A reported number: the decimal text of its value (the digits printed) and its absolute
+/// error estimate, in the quantity's own units.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Quantity {
+    pub(crate) text: String,
+    pub(crate) error: f64,
+}
+
+impl Quantity {
+    /// `x` printed to `digits` significant digits, with the estimate `error` (at least
+    /// `floor` |x|, the print floor); an error naming `key` when either is not finite.
+    pub(crate) fn new<T: Real>(
+        key: &str,
+        x: &T,
+        error: f64,
+        floor: f64,
+        digits: usize,
+    ) -> Result<Self> {
+        if !x.is_finite() {
+            return Err(not_finite(key));
+        }
+        if !error.is_finite() {
+            return Err(not_finite(&format!("the error estimate of {key}")));
+        }
+        Ok(Quantity {
+            text: x.to_decimal(digits),
+            error: error.max(floor * x.to_f64().abs()),
+        })
+    }
+    /// The value as decimal text, with the digits of the report.
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+    /// The value rounded to f64 (use [`Self::text`] or [`Self::to_float`] for the digits
+    /// beyond).
+    pub fn value(&self) -> f64 {
+        self.text.parse().unwrap_or(f64::NAN)
+    }
+    /// The value at `bits` of precision (exactly the printed digits, rounded to `bits`).
+    pub fn to_float(&self, bits: u32) -> Float {
+        match Float::parse(&self.text) {
+            Ok(x) => Float::with_val(bits, x),
+            Err(_) => Float::with_val(bits, f64::NAN),
+        }
+    }
+    /// The absolute error estimate.
+    pub fn error(&self) -> f64 {
+        self.error
+    }
+    /// The same quantity printed to `digits` digits (its estimate kept, at least `floor`
+    /// |value|).
+    pub(crate) fn rounded(&self, digits: usize, floor: f64) -> Quantity {
+        let x = self.to_float(4096);
+        Quantity {
+            text: x.to_decimal(digits),
+            error: self.error.max(floor * self.value().abs()),
+        }
+    }
+}
+
+pub(crate) fn not_finite(key: &str) -> WedgeError {
+    WedgeError::NotFinite {
+        what: key.to_string(),
+    }
+}
+
+/// A quantity that a case may lack: its value, the reason it is unavailable, or left out by
+/// the caller's [`Selection`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Entry<V> {
+    /// The value.
+    Value(V),
+    /// Why there is no value.
+    Unavailable(String),
+    /// Not computed: the selection left it out.
+    Omitted,
+}
+
+impl<V> Entry<V> {
+    /// The value, if available.
+    pub fn value(&self) -> Option<&V> {
+        match self {
+            Entry::Value(v) => Some(v),
+            _ => None,
+        }
+    }
+    /// The reason, if unavailable.
+    pub fn reason(&self) -> Option<&str> {
+        match self {
+            Entry::Unavailable(r) => Some(r),
+            _ => None,
+        }
+    }
+    /// The entry of `key` when `sel` wants it (computed by `f`), else [`Entry::Omitted`].
+    pub(crate) fn when(sel: &Selection, key: &str, f: impl FnOnce() -> Self) -> Self {
+        if sel.wants(key) {
+            f()
+        } else {
+            Entry::Omitted
+        }
+    }
+}
+
+/// The relative error floor of a value printed to `digits` significant digits and computed
+/// at `bits` bits: half a unit in the last printed digit, or 8 units of round-off.
+pub fn print_floor(digits: usize, bits: u32) -> f64 {
+    (0.5 * 10f64.powi(1 - digits as i32)).max(8.0 * 2f64.powi(-(bits as i32)))
+}
