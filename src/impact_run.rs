@@ -6,7 +6,7 @@ use clap::Args;
 use complexfn::{Dd, Real};
 use impact::scalar::Scalar;
 use impact::{
-    Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, ShellStriker, Solution, Stop, Striker,
+    Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, ShellStriker, SolvedImpact, Stop, Striker,
     StrikerMaterial, Value as Est,
 };
 use serde_json::{json, Map, Value};
@@ -470,7 +470,7 @@ impl Digits {
 /// rows it was made from.
 fn report<T: Scalar>(
     a: &RunArgs,
-    sol: &Solution<T>,
+    sol: &SolvedImpact<T>,
     version: &str,
     digits: Option<usize>,
 ) -> R<(Value, Vec<HistoryRow<T>>)> {
@@ -1024,7 +1024,7 @@ const PROGRESS_AFTER_S: f64 = 2.0;
 
 /// The shell striker's strain and vibration energies with their estimates, added to the
 /// report's columns (f64: the shell runs in f64 only).
-fn shell_energy_columns(sol: &Solution, rows: &[HistoryRow], v: &mut Value) -> R<()> {
+fn shell_energy_columns(sol: &SolvedImpact, rows: &[HistoryRow], v: &mut Value) -> R<()> {
     let Some(parts) = sol.shell_energy_history(rows) else {
         return Ok(());
     };

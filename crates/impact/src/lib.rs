@@ -33,6 +33,6 @@ pub use profile::Profile;
 pub use run::Run;
 pub use solve::Progress;
 pub use solved::{
-    coarse_means, HistoryRow, PressureProfile, Rebound, Solution, Stage, Value, PEAK_DROP,
+    coarse_means, HistoryRow, PressureProfile, Rebound, SolvedImpact, Stage, Value, PEAK_DROP,
 };
 pub use striker::{ShellStriker, Striker, StrikerMaterial};

@@ -11,7 +11,7 @@ use crate::march::{March, Motion};
 use crate::profile::Profile;
 use crate::run::Run;
 use crate::scalar::Scalar;
-use crate::solved::Solution;
+use crate::solved::SolvedImpact;
 use crate::striker::Striker;
 use crate::tables::Tables;
 
@@ -62,7 +62,7 @@ impl ImpactCase {
 
     /// Solves the case on `levels` grids (dx, 2 dx, ...) in f64. `progress` is called with
     /// the fraction done.
-    pub fn solve(&self, progress: impl FnMut(f64)) -> Result<Solution> {
+    pub fn solve(&self, progress: impl FnMut(f64)) -> Result<SolvedImpact> {
         self.solve_at::<f64>(progress)
     }
 
@@ -73,7 +73,7 @@ impl ImpactCase {
     pub fn solve_at<T: Scalar + CachedRules>(
         &self,
         mut progress: impl FnMut(f64),
-    ) -> Result<Solution<T>> {
+    ) -> Result<SolvedImpact<T>> {
         self.solve_reporting::<T>(|p| progress(p.fraction))
     }
 
@@ -82,7 +82,7 @@ impl ImpactCase {
     pub fn solve_reporting<T: Scalar + CachedRules>(
         &self,
         mut report: impl FnMut(Progress),
-    ) -> Result<Solution<T>> {
+    ) -> Result<SolvedImpact<T>> {
         self.validate()?;
         let extended = T::BITS > 53;
         if extended && !matches!(self.striker, Striker::Rigid) {
@@ -294,7 +294,7 @@ impl ImpactCase {
                 .and_then(|r| r.steps.last())
                 .map_or(0.0, |s| s.t.to_f64()),
         });
-        Ok(Solution {
+        Ok(SolvedImpact {
             case: self.clone(),
             m,
             s_r,

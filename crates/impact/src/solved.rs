@@ -16,7 +16,7 @@ use crate::striker::{shell_energies, Ring, Striker};
 /// error is not smooth in dx.
 const ESTIMATE_SAFETY: f64 = 4.0;
 
-/// A pressure profile of the finest grid ([`Solution::pressure_profile`]).
+/// A pressure profile of the finest grid ([`SolvedImpact::pressure_profile`]).
 #[derive(Clone, Debug)]
 pub struct PressureProfile<T = f64> {
     /// c1 t/R (the middle of the step).
@@ -116,7 +116,7 @@ pub struct HistoryRow<T = f64> {
     pub energy_defect: Option<Value<T>>,
 }
 
-/// The rebound of a free striker, after its last separation ([`Solution::rebound`]).
+/// The rebound of a free striker, after its last separation ([`SolvedImpact::rebound`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Rebound<T = f64> {
     /// c1 t/R at which the contact last ended (the end of the last step in contact).
@@ -146,7 +146,7 @@ pub struct Orders {
 
 /// A solved case, at the precision T.
 #[derive(Clone, Debug)]
-pub struct Solution<T = f64> {
+pub struct SolvedImpact<T = f64> {
     /// The inputs.
     pub case: ImpactCase,
     /// c2/c1.
@@ -164,7 +164,7 @@ fn order(fine: &[f64], mid: &[f64], coarse: &[f64]) -> Option<f64> {
     (d1 > 0.0 && d2 > 0.0).then(|| (d2 / d1).log2())
 }
 
-impl<T: Scalar> Solution<T> {
+impl<T: Scalar> SolvedImpact<T> {
     /// The reporting interval: the coarsest level's time step (its times are steps of every
     /// level).
     pub fn report_dt(&self) -> T {
@@ -473,7 +473,7 @@ impl<T: Scalar> Solution<T> {
         self.pressure_profile(t).map(|p| (p.t, p.x, p.p))
     }
 
-    /// The pressure profile of [`Solution::pressure_at`] with an error estimate per cell
+    /// The pressure profile of [`SolvedImpact::pressure_at`] with an error estimate per cell
     /// (`docs/impact.md`, section 5), from the next coarser grid (none with one level). The
     /// finest grid's two steps that make up the coarser grid's step (the same middle time)
     /// are averaged and taken to the coarser cells ([`coarse_means`]); e_j is four times the
@@ -533,7 +533,7 @@ impl<T: Scalar> Solution<T> {
     }
 }
 
-impl Solution<f64> {
+impl SolvedImpact<f64> {
     /// The shell striker's strain and vibration kinetic energy over rho c1^2 R^2 after each
     /// step of the finest grid, (c1 t/R, strain, kinetic), by the modal recursion of
     /// [`shell_energies`] (independent of the coefficient tables); `None` for other strikers.
@@ -560,7 +560,7 @@ impl Solution<f64> {
     }
 
     /// The shell striker's (strain, vibration kinetic) energy over rho c1^2 R^2 at the times
-    /// of `rows` (from [`Solution::history`]), each with an error estimate: four times the
+    /// of `rows` (from [`SolvedImpact::history`]), each with an error estimate: four times the
     /// difference between the two finest levels (the factor of the history's estimates),
     /// plus the modal truncation bound. `None` for other strikers.
     pub fn shell_energy_history(&self, rows: &[HistoryRow]) -> Option<Result<Vec<(Value, Value)>>> {
@@ -610,7 +610,7 @@ impl Solution<f64> {
     }
 }
 
-impl<T: Scalar> Solution<T> {
+impl<T: Scalar> SolvedImpact<T> {
     /// The intervals of c1 t/R over which a prescribed (kinematic) edge advanced faster than
     /// the Rayleigh wave and slower than c1, on the finest grid (the edge's speed over the last
     /// four steps, as the march takes it); empty under Signorini's law. A prescribed edge
@@ -664,5 +664,5 @@ impl<T: Scalar> Solution<T> {
 }
 
 /// The share of the largest force the run's last force must fall below for the largest to
-/// be reported as a peak ([`Solution::peak_force`]).
+/// be reported as a peak ([`SolvedImpact::peak_force`]).
 pub const PEAK_DROP: f64 = 0.99;

@@ -7,7 +7,7 @@ mod common;
 
 use common::m2;
 use impact::march::StepState;
-use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile, Solution};
+use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile, SolvedImpact};
 
 /// The mean of the profile over cell i of width dx (cell 0 over its right half), by the
 /// same 3-point Gauss-Legendre rule as the march's conditions.
@@ -30,7 +30,7 @@ fn cell_mean(profile: &Profile, dx: f64, i: usize) -> Option<f64> {
 /// no cell beyond the contact (within the displacements the step kept) whose mean gap
 /// w - (h - mean f) is below -`tol` times the largest penetration. Returns the most negative
 /// pressure over the largest and the most negative relative gap.
-fn unilateral(sol: &Solution, tol: f64) -> (f64, f64) {
+fn unilateral(sol: &SolvedImpact, tol: f64) -> (f64, f64) {
     let mut worst = (0.0f64, 0.0f64);
     for run in &sol.runs {
         let dx = run.dx;
@@ -72,7 +72,7 @@ fn unilateral(sol: &Solution, tol: f64) -> (f64, f64) {
 
 /// After the last separation the striker flies free: its speed is constant and h grows
 /// linearly, on every level.
-fn flies_free(sol: &Solution) {
+fn flies_free(sol: &SolvedImpact) {
     for run in &sol.runs {
         let sep = *run.separations.last().expect("a separation");
         let after: Vec<&StepState> = run.steps.iter().filter(|s| s.t > sep + run.dt).collect();
