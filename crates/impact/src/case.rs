@@ -9,6 +9,7 @@
 use crate::error::{invalid, ImpactError, Result};
 use crate::march::EdgeLaw;
 use crate::profile::Profile;
+use crate::scalar::Scalar;
 use crate::striker::Striker;
 
 /// Smallest admissible kappa = c1 dt/dx. The march is stable for every kappa (the discrete
@@ -55,6 +56,35 @@ pub enum Drive {
     Speed(f64),
     /// Penetration from a table of (c1 t/R, h/R) points, starting at (0, 0), increasing t.
     Table(Vec<(f64, f64)>),
+}
+
+impl Drive {
+    /// The free striker's mass per unit length m0 in the march's units mu R^2/c1^2 (c1 = mu = 1,
+    /// lengths in R, so rho = 1/m^2): `mass_ratio`/m^2, at the precision of `m` = c2/c1;
+    /// `None` for a driven striker. The one conversion of the mass ratio: the march and the
+    /// solved case both take m0 from here.
+    pub fn mass<T: Scalar>(&self, m: T) -> Option<T> {
+        match self {
+            Drive::Free { mass_ratio, .. } => Some(T::input(*mass_ratio) / (m * m)),
+            Drive::Speed(_) | Drive::Table(_) => None,
+        }
+    }
+
+    /// The prescribed penetration h/R at time c1 t/R = `t`, at the precision of t (`None` for
+    /// a free striker): V t for [`Drive::Speed`], linear between the points of a
+    /// [`Drive::Table`].
+    pub fn driven_h<T: Scalar>(&self, t: T) -> Option<T> {
+        match self {
+            Drive::Free { .. } => None,
+            Drive::Speed(v) => Some(t * T::input(*v)),
+            Drive::Table(tab) => {
+                let i = tab.partition_point(|p| t >= p.0).clamp(1, tab.len() - 1);
+                let (a, b) = (tab[i - 1], tab[i]);
+                let (ax, ay, bx, by) = (T::input(a.0), T::input(a.1), T::input(b.0), T::input(b.1));
+                Some((t - ax) * (by - ay) / (bx - ax) + ay)
+            }
+        }
+    }
 }
 
 /// Where a run stops.

@@ -7,7 +7,7 @@ use lamb::HalfPlane;
 
 use crate::case::{Drive, ImpactCase, Stop};
 use crate::error::{invalid, ImpactError, Result};
-use crate::march::{March, Motion};
+use crate::march::March;
 use crate::profile::Profile;
 use crate::run::Run;
 use crate::scalar::Scalar;
@@ -103,17 +103,6 @@ impl ImpactCase {
         let m = *hp.m();
         let s_r = *hp.s_r();
         let m64 = m.to_f64();
-        let motion = match &self.drive {
-            Drive::Free {
-                mass_ratio,
-                v0_over_c1,
-            } => Motion::Free {
-                mass_ratio: *mass_ratio,
-                v0: *v0_over_c1,
-            },
-            Drive::Speed(v) => Motion::DrivenSpeed(*v),
-            Drive::Table(t) => Motion::DrivenTable(t.clone()),
-        };
         // The levels share their time levels (`docs/impact.md`, section 5): the coarsest
         // step dt_c, and dt_c/2, dt_c/4, ... below it, so that every level has a value at
         // every reported time. To an end time, dt_c = end/N_c exactly (kappa then differs from
@@ -201,7 +190,7 @@ impl ImpactCase {
                     .or(shared.as_mut())
                     .and_then(|c| T::striker_rows(c)),
                 &self.profile,
-                &motion,
+                &self.drive,
                 self.law,
                 grid_dx,
                 dt,
@@ -298,10 +287,7 @@ impl ImpactCase {
             case: self.clone(),
             m,
             s_r,
-            mass: match motion {
-                Motion::Free { mass_ratio, .. } => Some(T::input(mass_ratio) / (m * m)),
-                _ => None,
-            },
+            mass: self.drive.mass(m),
             runs,
         })
     }

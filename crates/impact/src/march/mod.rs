@@ -8,6 +8,7 @@
 
 use complexfn::quadrature::CachedRules;
 
+use crate::case::Drive;
 use crate::error::{ImpactError, Result};
 use crate::history::{HistorySum, KernelRows};
 use crate::linalg::Factor;
@@ -18,40 +19,6 @@ use crate::tables::{ShapeRules, Tables};
 mod edge;
 
 use edge::{SystemCache, TiedBasis};
-
-/// How the penetration evolves.
-#[derive(Clone, Debug)]
-pub enum Motion {
-    /// A free rigid striker: mass per unit length m0 and initial speed v0 (units c1).
-    Free {
-        /// m0/(rho R^2); the march takes m0 = mass_ratio/m^2 in its units mu R^2/c1^2 at its
-        /// own precision.
-        mass_ratio: f64,
-        /// Initial speed over c1.
-        v0: f64,
-    },
-    /// Penetration prescribed at constant speed (units c1).
-    DrivenSpeed(f64),
-    /// Penetration prescribed by a table (c1 t/R, h/R), linear between points, h(0) = 0.
-    DrivenTable(Vec<(f64, f64)>),
-}
-
-impl Motion {
-    /// The prescribed penetration at time t, at the precision of t (`None` for a free
-    /// striker).
-    fn driven_h<T: Scalar>(&self, t: T) -> Option<T> {
-        match self {
-            Motion::Free { .. } => None,
-            Motion::DrivenSpeed(v) => Some(t * T::input(*v)),
-            Motion::DrivenTable(tab) => {
-                let i = tab.partition_point(|p| t >= p.0).clamp(1, tab.len() - 1);
-                let (a, b) = (tab[i - 1], tab[i]);
-                let (ax, ay, bx, by) = (T::input(a.0), T::input(a.1), T::input(b.0), T::input(b.1));
-                Some((t - ax) * (by - ay) / (bx - ax) + ay)
-            }
-        }
-    }
-}
 
 /// The edge law (labelled in every output); shared with the edge analysis of `lamb::edge`.
 pub use lamb::edge::EdgeLaw;
@@ -99,7 +66,7 @@ pub struct March<'a, T: Scalar + CachedRules = f64> {
     /// The striker's compliance rows (none for a rigid striker).
     striker: Option<&'a mut dyn KernelRows<T>>,
     profile: &'a Profile,
-    motion: &'a Motion,
+    drive: &'a Drive,
     law: EdgeLaw,
     dx: T,
     dt: T,
@@ -215,7 +182,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         tables: &'a mut Tables<T>,
         striker: Option<&'a mut dyn KernelRows<T>>,
         profile: &'a Profile,
-        motion: &'a Motion,
+        drive: &'a Drive,
         law: EdgeLaw,
         dx: T,
         dt: T,
@@ -229,7 +196,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         March {
             tables,
             profile,
-            motion,
+            drive,
             law,
             dx,
             dt,
@@ -404,19 +371,16 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         let zero = T::of(0.0);
         let (h0, v0, k0) = match self.steps.last() {
             Some(s) => (s.h, s.v, s.k),
-            None => match self.motion {
-                Motion::Free { v0, .. } => (zero, T::input(*v0), 0),
+            None => match self.drive {
+                Drive::Free { v0_over_c1, .. } => (zero, T::input(*v0_over_c1), 0),
                 _ => (zero, zero, 0),
             },
         };
-        let (h_pred, coupling, mass) = match (self.motion.driven_h(t), self.motion) {
+        let m = *self.tables.half_plane().m();
+        let (h_pred, coupling, mass) = match (self.drive.driven_h(t), self.drive.mass(m)) {
             (Some(h), _) => (h, zero, T::of(f64::INFINITY)),
-            (None, Motion::Free { mass_ratio, .. }) => {
-                let m = *self.tables.half_plane().m();
-                let mass = T::input(*mass_ratio) / (m * m);
-                (h0 + dt * v0, dt * dt / (mass * 2.0), mass)
-            }
-            _ => unreachable!("a driven motion always gives h"),
+            (None, Some(mass)) => (h0 + dt * v0, dt * dt / (mass * 2.0), mass),
+            (None, None) => unreachable!("a driven striker always gives h"),
         };
         let profile = self.profile;
         let kin = move |h: T| profile.kinematic_edge(h);
@@ -548,9 +512,9 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         }
         let ((k, b, p, f), mid_step): (StepSet<T>, MidStep) =
             set.unwrap_or(((0, zero, Vec::new(), zero), false));
-        let (h, v) = match self.motion.driven_h(t) {
+        let (h, v) = match self.drive.driven_h(t) {
             Some(h) => {
-                let hp = self.motion.driven_h(t - dt).unwrap_or(zero);
+                let hp = self.drive.driven_h(t - dt).unwrap_or(zero);
                 (h, (h - hp) / dt)
             }
             None => (
