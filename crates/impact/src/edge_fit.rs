@@ -16,10 +16,10 @@ use lamb::edge::{EdgeBehaviour, SpeedRange};
 use lamb::HalfPlane;
 
 use crate::error::{invalid, ImpactError, Result};
-use crate::linalg::Lu;
 use crate::march::EdgeLaw;
 use crate::run::Run;
 use crate::solved::SolvedImpact;
+use complexfn::linalg::Lu;
 
 /// The fit's upper end in s = d/b for a driven wedge (its pressure has a logarithmic peak at
 /// the apex, s = 1).

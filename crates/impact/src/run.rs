@@ -113,7 +113,7 @@ impl<T: Scalar> Run<T> {
                 r[i] += phi[i] * v;
             }
         }
-        crate::linalg::Lu::new(m, 3)
+        complexfn::linalg::Lu::new(m, 3)
             .and_then(|lu| lu.solve(&r))
             .map(|c| c[0])
     }

@@ -9,8 +9,8 @@ use super::options::*;
 use crate::basis::{Basis, Family};
 use crate::error::{invalid, GenuineError, Result};
 use crate::kernels::{contour_integrand, y_integral_checked, CauchySums, Lamb};
-use crate::lsq::{least_squares, Matrix};
 use crate::quad::{tanh_sinh_unit, tanh_sinh_unit_node, UnitNode};
+use complexfn::linalg::{least_squares, Matrix};
 
 /// Everything that defines one case (shared by the two basis sizes).
 #[derive(Clone, Debug)]

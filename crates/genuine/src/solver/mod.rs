@@ -34,7 +34,7 @@
 //! node is closer to a collocation point than a quarter step and the difference quotient
 //! (f(v) - f(x))/(v - x) keeps its accuracy. The rows and a normalisation row (the force
 //! moment Int_0^p x h dx = 1, heavily weighted) are solved in the least-squares sense by
-//! Householder QR with column pivoting ([`crate::lsq`]); the contour functionals of step 2 are
+//! Householder QR with column pivoting ([`complexfn::linalg`]); the contour functionals of step 2 are
 //! then evaluated for the solution only (one column, not one per basis function), and the
 //! solution is rescaled so that the slope condition holds. The error estimate is
 //! |V_hat(N) - V_hat(N/2)| plus a precision-dependent floor ([`roundoff_floor`]).
