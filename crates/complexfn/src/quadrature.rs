@@ -13,6 +13,30 @@
 //!   [`gauss_legendre_doubling`], a driver with an error estimate from n and 2n nodes.
 //!
 //! The integrand receives a [`Point`]: the abscissa and its distances to both endpoints.
+//!
+//! # The other tanh-sinh implementation (`genuine::quad`)
+//! The genuine wedge solver keeps its own tanh-sinh rules (the module `quad` of the `genuine`
+//! crate, which depends on this one), and this module's rules serve the wedge crate and the
+//! rest of this layer. The two are not interchangeable:
+//! * variable map and node set: here the rule lives on [-1, 1] with steps 2^-k only, its
+//!   levels cached once per precision; `genuine::quad` places a rule of (0, 1) on each
+//!   interval, at any step h (a solver option such as `h_quad`), its nodes indexed by
+//!   t = k h formed in the working precision, so that the collocation points sit on the
+//!   quarter points of that same t-grid and the basis sampled once on the rule serves every
+//!   collocation row; it also has the single-exponential tanh map and the mixed
+//!   single/double-exponential map of the contour integrals' F-functions, which this module
+//!   does not;
+//! * truncation: here |t| <= t_max of the precision ([`Tails`], offsets down to 2^(-3 bits));
+//!   there from the precision and the weakest endpoint exponent of the case (`t_max_for`);
+//! * driver and error: [`tanh_sinh`] extrapolates the error from the last three levels, maps
+//!   endpoint singularities ([`EndExponent`]) and refuses a result short of its tolerance;
+//!   `genuine::quad::integrate_vec` integrates a vector of integrands from h = 1/2, stops on
+//!   the plain difference of two levels over the components it is told to check, and returns
+//!   that difference.
+//!
+//! Sharing one of them would change the nodes' rounding, the truncation or the stopping level
+//! of the other's integrals, and with them the reported digits of the solutions that rest on
+//! them.
 
 use std::collections::HashMap;
 use std::num::NonZeroUsize;
