@@ -30,6 +30,6 @@ pub mod scalar;
 pub use branch::{p_boundary, p_k, Side};
 pub use cx::Cx;
 pub use double_double::Dd;
-pub use error::{Error, Result};
+pub use error::{Error, InvalidParameter, NoConvergence, Result};
 pub use rayleigh::{Rayleigh, RayleighValues};
 pub use scalar::{Precision, Real};

@@ -637,11 +637,11 @@ where
     F: FnMut(&Point<T>) -> V,
 {
     if !(e.gap_hi > 0.0 && e.gap_hi.is_finite()) {
-        return Err(Error::InvalidParameter {
+        return Err(Error::InvalidParameter(crate::error::InvalidParameter {
             name: "endpoint exponent",
             value: format!("{}", e.alpha),
-            range: "(-1, 0) (an integrable endpoint singularity)",
-        });
+            range: "(-1, 0) (an integrable endpoint singularity)".into(),
+        }));
     }
     if 1.0 / e.gap_hi > KAPPA_POWER_MAX {
         exponential_end(a, b, e, left, opts, f)
@@ -785,11 +785,11 @@ where
         .min(s_cap)
         .max(s_prec.min(s_cap));
     if !(s_max > 1.0) {
-        return Err(Error::NoConvergence {
-            what: "tanh-sinh quadrature (an interval too short for its endpoint map)",
+        return Err(Error::NoConvergence(crate::error::NoConvergence {
+            what: "tanh-sinh quadrature (an interval too short for its endpoint map)".into(),
             reached: f64::INFINITY,
             asked: opts.rel_tol,
-        });
+        }));
     }
     let s_end = a.lit(s_max);
     let mut at = |s: &T| -> V {
@@ -987,11 +987,11 @@ where
     if !(err <= opts.rel_tol * scale.max(f64::MIN_POSITIVE) || err <= opts.rel_tol * 1e-300) {
         // report, but let the caller decide: a NaN or non-convergence is an error
         if !err.is_finite() || err > opts.rel_tol.sqrt() * scale.max(f64::MIN_POSITIVE) {
-            return Err(Error::NoConvergence {
-                what: "tanh-sinh quadrature",
+            return Err(Error::NoConvergence(crate::error::NoConvergence {
+                what: "tanh-sinh quadrature".into(),
                 reached: if scale > 0.0 { err / scale } else { err },
                 asked: opts.rel_tol,
-            });
+            }));
         }
     }
     Ok(Estimate {
@@ -1056,11 +1056,12 @@ fn f64_rule_cache() -> &'static Mutex<HashMap<RuleKey, Arc<F64Rule>>> {
 
 /// The n-point Gauss-Legendre rule on [-1, 1] (cached).
 pub fn gauss_legendre(n: usize) -> Result<Arc<F64Rule>> {
-    let nz = NonZeroUsize::new(n).ok_or(Error::InvalidParameter {
-        name: "quadrature degree",
-        value: "0".into(),
-        range: ">= 1",
-    })?;
+    let nz =
+        NonZeroUsize::new(n).ok_or(Error::InvalidParameter(crate::error::InvalidParameter {
+            name: "quadrature degree",
+            value: "0".into(),
+            range: ">= 1".into(),
+        }))?;
     let mut c = f64_rule_cache().lock().unwrap_or_else(|e| e.into_inner());
     Ok(c.entry((n, u64::MAX, u64::MAX))
         .or_insert_with(|| {
@@ -1075,15 +1076,18 @@ pub fn gauss_legendre(n: usize) -> Result<Arc<F64Rule>> {
 /// The n-point Gauss-Jacobi rule on [-1, 1] for the weight (1 - x)^alpha (1 + x)^beta,
 /// alpha, beta > -1 (cached per (n, alpha, beta)).
 pub fn gauss_jacobi(n: usize, alpha: f64, beta: f64) -> Result<Arc<F64Rule>> {
-    let nz = NonZeroUsize::new(n).ok_or(Error::InvalidParameter {
-        name: "quadrature degree",
-        value: "0".into(),
-        range: ">= 1",
-    })?;
-    let bad = |name, v: f64| Error::InvalidParameter {
-        name,
-        value: format!("{v}"),
-        range: "(-1, inf), finite",
+    let nz =
+        NonZeroUsize::new(n).ok_or(Error::InvalidParameter(crate::error::InvalidParameter {
+            name: "quadrature degree",
+            value: "0".into(),
+            range: ">= 1".into(),
+        }))?;
+    let bad = |name, v: f64| {
+        Error::InvalidParameter(crate::error::InvalidParameter {
+            name,
+            value: format!("{v}"),
+            range: "(-1, inf), finite".into(),
+        })
     };
     let a = gauss_quad::FiniteAboveNegOneF64::try_from(alpha)
         .map_err(|_| bad("jacobi alpha", alpha))?;

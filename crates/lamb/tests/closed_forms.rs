@@ -338,7 +338,10 @@ fn bad_input_is_refused_with_the_parameter_named() {
     let sr = *hp.s_r();
     assert!(matches!(
         hp.impulse(&-0.1),
-        Err(LambError::InvalidParameter { name: "s", .. })
+        Err(LambError::InvalidParameter(complexfn::InvalidParameter {
+            name: "s",
+            ..
+        }))
     ));
     assert!(matches!(
         hp.impulse(&sr),

@@ -220,7 +220,7 @@ impl<T: CachedRules> Case<T> {
             } else {
                 format!("Theta well above {theta}")
             };
-            return WedgeError::InvalidParameter {
+            return WedgeError::InvalidParameter(complexfn::InvalidParameter {
                 name: "theta_deg",
                 value: theta.to_string(),
                 range: format!(
@@ -232,7 +232,7 @@ impl<T: CachedRules> Case<T> {
                     crate::error::short(self.p.to_f64() * self.material.c1().value()),
                     self.indenter.gamma().text(),
                 ),
-            };
+            });
         }
         WedgeError::Undetermined {
             what: "v_over_c1_cot_theta".into(),

@@ -238,7 +238,7 @@ impl<T: CachedRules> GenuineCase<T> {
             .collect();
         // the level-doubling probe of the v-rule: the fine load on the nodes of step 2h
         let loads = prob.contour_loads(&cont, &hw, Some(&on_coarse), &diffs, &xs, opts.contour_tol);
-        let no_value = || GenuineError::NoConvergence {
+        let no_value = || GenuineError::SolveFailed {
             what: "contour",
             detail: "no value".into(),
         };
@@ -656,7 +656,7 @@ impl<T: CachedRules> GenuineCase<T> {
             .flatten()
             .find(|l| l.to_f64().is_nan() || l.to_f64() >= 0.0)
         {
-            return Err(GenuineError::NoConvergence {
+            return Err(GenuineError::SolveFailed {
                 what: "finite apex limit",
                 detail: format!("an apex exponent {} is not negative", bad.to_f64()),
             });
@@ -679,7 +679,7 @@ impl<T: CachedRules> GenuineCase<T> {
             }
         }
         if !s.is_finite() {
-            return Err(GenuineError::NoConvergence {
+            return Err(GenuineError::SolveFailed {
                 what: "finite apex limit",
                 detail: format!("not finite at p = {}", p.to_f64()),
             });

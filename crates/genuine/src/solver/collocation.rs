@@ -512,7 +512,7 @@ impl<T: Real> Problem<T> {
         let like = &self.p;
         let mpts = pts.len();
         if mpts < kk {
-            return Err(GenuineError::NoConvergence {
+            return Err(GenuineError::SolveFailed {
                 what: "collocation",
                 detail: format!("{mpts} distinct points for {kk} unknowns: decrease h_quad"),
             });
@@ -577,14 +577,14 @@ impl<T: Real> Problem<T> {
         let value = uy + self.beta.clone() * &ux;
         let usable = slope.clone().abs() > 0.0 && slope.is_finite();
         if !usable {
-            return Err(GenuineError::NoConvergence {
+            return Err(GenuineError::SolveFailed {
                 what: "collocation solve",
                 detail: format!("degenerate slope at p = {}", self.p.to_f64()),
             });
         }
         let v_hat = xs.clone() - value / &slope;
         if !v_hat.is_finite() {
-            return Err(GenuineError::NoConvergence {
+            return Err(GenuineError::SolveFailed {
                 what: "collocation solve",
                 detail: format!("non-finite V_hat at p = {}", self.p.to_f64()),
             });
