@@ -461,7 +461,7 @@ impl Digits {
     fn est<T: Scalar>(self, v: &Est<T>) -> (Value, Value) {
         (
             self.of(v.value),
-            v.err.map(|e| json!(e)).unwrap_or(Value::Null),
+            v.error.map(|e| json!(e)).unwrap_or(Value::Null),
         )
     }
 }
@@ -688,7 +688,7 @@ fn report<T: Scalar>(
             let v0 = v0_of(&sol.case);
             out.insert(
                 "separation_c1t_over_R".into(),
-                json!({"value": dg.of(r.separation.value), "error_estimate": r.separation.err}),
+                json!({"value": dg.of(r.separation.value), "error_estimate": r.separation.error}),
             );
             out.insert("restitution".into(), dg.of(r.restitution.value));
             out.insert(
@@ -701,9 +701,9 @@ fn report<T: Scalar>(
             );
             out.insert("reimpacts".into(), json!(r.reimpacts));
             for (key, e) in [
-                ("restitution", r.restitution.err),
-                ("rebound_speed_over_c1", r.restitution.err.map(|e| e * v0)),
-                ("energy_to_half_plane", r.energy_to_half_plane.err),
+                ("restitution", r.restitution.error),
+                ("rebound_speed_over_c1", r.restitution.error.map(|e| e * v0)),
+                ("energy_to_half_plane", r.energy_to_half_plane.error),
             ] {
                 match e {
                     Some(e) => {

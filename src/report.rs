@@ -594,6 +594,7 @@ impl SolveReport {
                             Ok(WithError {
                                 value: a.exponent,
                                 error: a.exponent_error,
+                                kind: complexfn::ErrorKind::Propagated,
                             }),
                             floor,
                             digits,

@@ -180,7 +180,7 @@ fn triple_into(
             p => format!("{p}_{k}"),
         };
         rec.insert(key.clone(), out.real(&e.value));
-        errs.insert(key, out.err(e.err));
+        errs.insert(key, out.err(e.error));
     }
 }
 

@@ -80,7 +80,7 @@ pub fn impact_history(ctx: &Ctx) -> Result<Summary> {
         ],
     );
     case_param(&mut table, &runs[0].1);
-    let err = |v: &impact::Value| v.err.map(CsvCell::Num).unwrap_or(CsvCell::Empty);
+    let err = |v: &impact::Value| v.error.map(CsvCell::Num).unwrap_or(CsvCell::Empty);
     for (law, _, rows) in &runs {
         for r in rows {
             table.push(vec![

@@ -46,6 +46,7 @@ use gauss_quad::{GaussJacobi, GaussLegendre};
 
 use crate::cx::Cx;
 use crate::error::{Error, Result};
+use crate::estimate::{ErrorKind, Estimate};
 use crate::scalar::Real;
 
 /// An abscissa `v` of an interval [a, b] with `from_a = v - a` and `to_b = b - v`, each
@@ -169,15 +170,39 @@ impl<T: Real, const N: usize> QuadValue<T> for [T; N] {
     }
 }
 
-/// A quadrature result with its (absolute) error estimate.
+/// A quadrature result: the integral with its absolute error estimate (an [`Estimate`] of
+/// kind [`ErrorKind::Quadrature`], an over-estimate once the rule has converged) and the
+/// number of integrand evaluations it took. It reads as its estimate (`q.value`, `q.error`).
 #[derive(Clone, Debug)]
-pub struct Estimate<V> {
-    /// The integral.
-    pub value: V,
-    /// Estimated absolute error (an over-estimate once the rule has converged).
-    pub error: f64,
+pub struct Quadrature<V> {
+    /// The integral and its error estimate.
+    pub estimate: Estimate<V>,
     /// Number of integrand evaluations.
     pub evals: usize,
+}
+
+impl<V> Quadrature<V> {
+    /// The integral `value` with the estimated absolute error `error`, after `evals`
+    /// evaluations of the integrand.
+    pub fn new(value: V, error: f64, evals: usize) -> Self {
+        Quadrature {
+            estimate: Estimate::new(value, error, ErrorKind::Quadrature),
+            evals,
+        }
+    }
+}
+
+impl<V> std::ops::Deref for Quadrature<V> {
+    type Target = Estimate<V>;
+    fn deref(&self) -> &Estimate<V> {
+        &self.estimate
+    }
+}
+
+impl<V> std::ops::DerefMut for Quadrature<V> {
+    fn deref_mut(&mut self) -> &mut Estimate<V> {
+        &mut self.estimate
+    }
 }
 
 /// One node of the tanh-sinh rule on [-1, 1] for t >= 0: x = tanh(pi/2 sinh t) >= 0.
@@ -557,7 +582,7 @@ impl Tail {
 /// Returns the estimate of the last level and `|S_k - S_{k-1}|` as its error; fails with
 /// [`Error::NoConvergence`] when the finest cached level does not reach `opts.rel_tol`, and
 /// with [`Error::InvalidParameter`] for a declared exponent not above -1.
-pub fn tanh_sinh<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Estimate<V>>
+pub fn tanh_sinh<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -584,13 +609,13 @@ where
                     to_b: p.to_b.clone(),
                 })
             })?;
-            let mut value = l.value;
+            let mut value = l.estimate.value;
             value.add_scaled(&r.value, &a.one());
-            Ok(Estimate {
+            Ok(Quadrature::new(
                 value,
-                error: l.error + r.error,
-                evals: l.evals + r.evals,
-            })
+                l.estimate.error + r.error,
+                l.evals + r.evals,
+            ))
         }
     }
 }
@@ -630,7 +655,7 @@ fn mapped_end<T, V, F>(
     left: bool,
     opts: TsOptions,
     f: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -658,7 +683,7 @@ fn power_end<T, V, F>(
     left: bool,
     opts: TsOptions,
     mut f: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -764,7 +789,7 @@ fn exponential_end<T, V, F>(
     left: bool,
     opts: TsOptions,
     mut f: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -808,16 +833,16 @@ where
     // working precision's round-off, whichever is larger
     let rel = (2f64.powi(-104)).max(4.0 * a.epsilon().to_f64());
     let tail_error = tail.magnitude().to_f64() * rel;
-    let mut value = body.value;
+    let mut value = body.estimate.value;
     value.add_scaled(&tail, &a.one());
-    Ok(Estimate {
+    Ok(Quadrature::new(
         value,
-        error: body.error + tail_error,
-        evals: body.evals + 1,
-    })
+        body.estimate.error + tail_error,
+        body.evals + 1,
+    ))
 }
 
-fn tanh_sinh_plain<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Estimate<V>>
+fn tanh_sinh_plain<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -994,11 +1019,7 @@ where
             }));
         }
     }
-    Ok(Estimate {
-        value,
-        error: err,
-        evals,
-    })
+    Ok(Quadrature::new(value, err, evals))
 }
 
 /// Order of convergence per level assumed by [`extrapolated_error`].
@@ -1143,7 +1164,7 @@ pub fn gauss_legendre_doubling<V: QuadValue<f64>, F: FnMut(&Point<f64>) -> V>(
     b: f64,
     n: usize,
     mut f: F,
-) -> Result<Estimate<V>> {
+) -> Result<Quadrature<V>> {
     let r1 = gauss_legendre(n)?;
     let r2 = gauss_legendre(2 * n)?;
     let i1 = r1.integrate(a, b, &mut f);
@@ -1154,11 +1175,7 @@ pub fn gauss_legendre_doubling<V: QuadValue<f64>, F: FnMut(&Point<f64>) -> V>(
             what: "Gauss-Legendre quadrature",
         });
     }
-    Ok(Estimate {
-        error,
-        value: i2,
-        evals: 3 * n,
-    })
+    Ok(Quadrature::new(i2, error, 3 * n))
 }
 
 #[cfg(test)]
@@ -1305,7 +1322,7 @@ mod tests {
             (p.from_a.clone().ln() * &g).exp() / p.from_a.clone() / p.to_b.clone().sqrt()
                 * (p.v.clone() + 1.0)
         };
-        let e: Estimate<T> = tanh_sinh(&like.zero(), &like.one(), opts, f).unwrap();
+        let e: Quadrature<T> = tanh_sinh(&like.zero(), &like.one(), opts, f).unwrap();
         let exact = beta_sum(gap);
         let actual = Float::with_val(600, e.value.to_mpfr(600) - &exact).abs() / &exact;
         (actual.to_f64(), e.error / exact.to_f64())

@@ -2,7 +2,7 @@
 //! estimates from grid refinement (`docs/impact.md`, section 5), the rebound, the pressure
 //! profiles and the striker's energies.
 
-use complexfn::Real;
+use complexfn::{ErrorKind, Real};
 
 use crate::case::{Drive, ImpactCase};
 use crate::error::{ImpactError, Result};
@@ -74,14 +74,11 @@ impl Stage {
     }
 }
 
-/// A value with its absolute error estimate (from refinement; `None` with one level).
-#[derive(Clone, Copy, Debug)]
-pub struct Value<T = f64> {
-    /// The finest grid's value.
-    pub value: T,
-    /// Absolute error estimate.
-    pub err: Option<f64>,
-}
+/// The finest grid's value with its absolute error estimate from refinement (kind
+/// [`ErrorKind::Refinement`]): the workspace's one value-with-error type,
+/// [`complexfn::Estimate`], whose error is here an `Option`, `None` with a single grid level
+/// (nothing to refine against), never a zero that would read as exact.
+pub type Value<T = f64> = complexfn::Estimate<T, Option<f64>>;
 
 /// One row of the reported history (dimensionless).
 #[derive(Clone, Debug)]
@@ -243,15 +240,18 @@ impl<T: Scalar> SolvedImpact<T> {
         Ok(Rebound {
             separation: Value {
                 value: sep,
-                err: est(0).map(|e| e.max(fine.dt.to_f64())),
+                error: est(0).map(|e| e.max(fine.dt.to_f64())),
+                kind: ErrorKind::Refinement,
             },
             restitution: Value {
                 value: res,
-                err: est(1),
+                error: est(1),
+                kind: ErrorKind::Refinement,
             },
             energy_to_half_plane: Value {
                 value: work,
-                err: est(2),
+                error: est(2),
+                kind: ErrorKind::Refinement,
             },
             reimpacts: fine.reimpacts.len(),
         })
@@ -378,11 +378,12 @@ impl<T: Scalar> SolvedImpact<T> {
             let st = &fine.steps[step_at(fine, i) - 1];
             let val = |q: usize, scale: T| Value {
                 value: samples[q][0][i] * scale,
-                err: if i < nuse {
+                error: if i < nuse {
                     est(q, i).map(|e| e * scale.to_f64().abs())
                 } else {
                     None
                 },
+                kind: ErrorKind::Refinement,
             };
             let bdot = {
                 let b = |j: usize| samples[2][0][j];
@@ -415,12 +416,14 @@ impl<T: Scalar> SolvedImpact<T> {
                 };
                 Value {
                     value: k,
-                    err: if i < nuse { e } else { None },
+                    error: if i < nuse { e } else { None },
+                    kind: ErrorKind::Refinement,
                 }
             });
             let work = Value {
                 value: st.work * m2,
-                err: kinetic.and_then(|k| k.err),
+                error: kinetic.and_then(|k| k.error),
+                kind: ErrorKind::Refinement,
             };
             let deformable = !matches!(self.case.striker, Striker::Rigid);
             // under Signorini's law the continuum's defect is exactly 0, so the defect is its
@@ -429,7 +432,7 @@ impl<T: Scalar> SolvedImpact<T> {
                 let mut d = val(6, one);
                 if self.case.law == EdgeLaw::Signorini {
                     let own = d.value.to_f64().abs();
-                    d.err = Some(d.err.map_or(own, |e| e.max(own)));
+                    d.error = Some(d.error.map_or(own, |e| e.max(own)));
                 }
                 d
             });
@@ -598,11 +601,13 @@ impl SolvedImpact<f64> {
             out.push((
                 Value {
                     value: u,
-                    err: err.map(|e| e.0),
+                    error: err.map(|e| e.0),
+                    kind: ErrorKind::Refinement,
                 },
                 Value {
                     value: k,
-                    err: err.map(|e| e.1),
+                    error: err.map(|e| e.1),
+                    kind: ErrorKind::Refinement,
                 },
             ));
         }

@@ -947,6 +947,7 @@ mod tests {
                     |pt: &Point<Float>| f(&pt.v),
                 )
                 .unwrap()
+                .estimate
                 .value
             };
             let close = |got: Cx<Float>, exact: Cx<Float>, what: &str| {
