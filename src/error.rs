@@ -51,9 +51,9 @@ impl Error {
     pub fn parameter(&self) -> Option<&'static str> {
         match self {
             Error::Input(e) => Some(e.parameter),
-            Error::Wedge(wedge::WedgeError::InvalidParameter { name, .. }) => Some(name),
-            Error::Impact(impact::ImpactError::InvalidParameter { name, .. }) => Some(name),
-            Error::Lamb(lamb::LambError::InvalidParameter { name, .. }) => Some(name),
+            Error::Wedge(wedge::WedgeError::InvalidParameter(p)) => Some(p.name),
+            Error::Impact(impact::ImpactError::InvalidParameter(p)) => Some(p.name),
+            Error::Lamb(lamb::LambError::InvalidParameter(p)) => Some(p.name),
             _ => None,
         }
     }

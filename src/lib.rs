@@ -302,11 +302,11 @@ fn inverse_estimates(input: &CaseInput, r: &mut SolveReport, sel: &Selection) ->
     };
     let dv = slope("v_over_c1_cot_theta").unwrap_or(0.0).abs();
     if !(dv.is_finite() && dv > 0.0) {
-        return Err(WedgeError::NoConvergence {
+        return Err(WedgeError::NoConvergence(complexfn::NoConvergence {
             what: "slope of the alpha-V relation".into(),
             reached: dv,
             asked: 0.0,
-        });
+        }));
     }
     let d_alpha = 2.0 * r.v_over_c1_cot_theta.error() / dv;
     let c1 = input.material.c1().value();

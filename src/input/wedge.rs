@@ -9,10 +9,13 @@ use wedge::{Result, WedgeError};
 
 /// Parse points "x:y,x:y" (x/(c1 t), y/(c1 t)) into pairs; `name` goes into the error.
 pub fn parse_points(name: &'static str, s: &str) -> Result<Vec<(wedge::Param, wedge::Param)>> {
-    let bad = || WedgeError::InvalidParameter {
-        name,
-        value: s.to_string(),
-        range: "comma-separated x:y pairs (x/(c1 t), y/(c1 t)) with y < 0 and x^2 + y^2 < 1".into(),
+    let bad = || {
+        WedgeError::InvalidParameter(complexfn::InvalidParameter {
+            name,
+            value: s.to_string(),
+            range: "comma-separated x:y pairs (x/(c1 t), y/(c1 t)) with y < 0 and x^2 + y^2 < 1"
+                .into(),
+        })
     };
     s.split(',')
         .map(|t| {
@@ -34,10 +37,12 @@ pub fn parse_params(name: &'static str, s: &str) -> Result<Vec<wedge::Param>> {
 
 /// Parse a range "min,max,steps" (steps >= 2, min < max).
 pub fn parse_range(name: &'static str, s: &str) -> Result<(wedge::Param, wedge::Param, usize)> {
-    let bad = || WedgeError::InvalidParameter {
-        name,
-        value: s.to_string(),
-        range: "min,max,steps with min < max and an integer steps >= 2".into(),
+    let bad = || {
+        WedgeError::InvalidParameter(complexfn::InvalidParameter {
+            name,
+            value: s.to_string(),
+            range: "min,max,steps with min < max and an integer steps >= 2".into(),
+        })
     };
     let parts: Vec<&str> = s.split(',').map(str::trim).collect();
     if parts.len() != 3 {
@@ -80,14 +85,14 @@ pub fn check_spacing(
     let step = (Float::with_val(256, &b - &a) / ((n - 1) as u32)).to_f64();
     let resolution = f64_resolution(lo.value().abs().max(hi.value().abs()));
     if step < resolution {
-        return Err(WedgeError::InvalidParameter {
+        return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
             name,
             value: s.to_string(),
             range: format!(
                 "min,max,steps spaced at least the f64 resolution of its values: \
                  (max - min)/(steps - 1) = {step:.3e} is below {resolution:.3e}"
             ),
-        });
+        }));
     }
     Ok(())
 }

@@ -11,7 +11,7 @@
 
 use complexfn::Real;
 use impact::scalar::Scalar;
-use impact::{Drive, EdgeLaw, ImpactCase, Solution, Stop, Striker, Value as Est};
+use impact::{Drive, EdgeLaw, ImpactCase, SolvedImpact, Stop, Striker, Value as Est};
 use lamb::{Estimate, HalfPlane, Triple};
 use serde_json::{json, Map, Value};
 
@@ -318,7 +318,7 @@ fn number<T: Scalar>(x: T, digits: Option<usize>) -> Number {
 fn estimated<T: Scalar>(v: &Est<T>, digits: Option<usize>) -> Estimated {
     Estimated {
         value: number(v.value, digits),
-        error: v.err,
+        error: v.error,
     }
 }
 
@@ -334,7 +334,7 @@ impl RunReport {
     /// The report of the solved run `sol` at `digits` significant digits (`None` for f64),
     /// with the pressure profiles at the times `pressure_at` (c1 t/R, each within the run).
     pub fn of<T: Scalar>(
-        sol: &Solution<T>,
+        sol: &SolvedImpact<T>,
         version: &str,
         digits: Option<usize>,
         pressure_at: &[f64],
@@ -355,8 +355,8 @@ impl RunReport {
             let values = vals.iter().map(|v| dg(v.value)).collect();
             let errors = if levels < 2 {
                 None
-            } else if vals.iter().all(|v| v.err.is_some()) {
-                Some(vals.iter().map(|v| v.err.unwrap_or(0.0)).collect())
+            } else if vals.iter().all(|v| v.error.is_some()) {
+                Some(vals.iter().map(|v| v.error.unwrap_or(0.0)).collect())
             } else {
                 why.push((
                     format!("error_estimate.{key}"),
@@ -478,7 +478,7 @@ impl RunReport {
                     restitution: estimated(&r.restitution, digits),
                     rebound_speed_over_c1: Estimated {
                         value: dg(r.restitution.value * T::input(v0)),
-                        error: r.restitution.err.map(|e| e * v0),
+                        error: r.restitution.error.map(|e| e * v0),
                     },
                     energy_to_half_plane: estimated(&r.energy_to_half_plane, digits),
                     reimpacts: r.reimpacts,
@@ -614,7 +614,7 @@ impl RunReport {
     /// shell runs in f64 only).
     pub fn add_shell_energy(
         &mut self,
-        sol: &Solution,
+        sol: &SolvedImpact,
         rows: &[impact::HistoryRow],
     ) -> Result<(), String> {
         let Some(parts) = sol.shell_energy_history(rows) else {
@@ -632,8 +632,8 @@ impl RunReport {
             self.shell_energy.push(Column {
                 key,
                 values: vals.iter().map(|v| number(v.value, None)).collect(),
-                // written as they are, an absent estimate as null
-                errors: Some(vals.iter().map(|v| v.err.unwrap_or(f64::NAN)).collect()),
+                // every value's estimate, or none (one grid level)
+                errors: vals.iter().map(|v| v.error).collect(),
             });
         }
         Ok(())
@@ -837,7 +837,7 @@ impl RunReport {
         if !scalars_only {
             for col in &self.shell_energy {
                 if let Some(e) = &col.errors {
-                    errs.insert(col.key.into(), floats_or_null(e));
+                    errs.insert(col.key.into(), json!(e));
                 }
             }
         }
@@ -954,15 +954,6 @@ fn numbers(xs: &[Number]) -> Value {
     Value::Array(xs.iter().map(Number::json).collect())
 }
 
-/// f64 estimates as JSON, a non-finite one (an absent estimate) as null.
-fn floats_or_null(xs: &[f64]) -> Value {
-    Value::Array(
-        xs.iter()
-            .map(|&x| if x.is_finite() { json!(x) } else { Value::Null })
-            .collect(),
-    )
-}
-
 /// An f64 estimate as a CSV cell (empty when absent).
 fn float_cell(x: f64) -> String {
     if x.is_finite() {
@@ -1008,7 +999,7 @@ impl GreenValue {
     fn of<T: Real>(e: &Estimate<T>, digits: usize) -> Self {
         GreenValue {
             text: e.value.to_decimal(digits),
-            error: e.err,
+            error: e.error,
         }
     }
     fn error_json(&self) -> Value {

@@ -240,11 +240,11 @@ impl Selection {
             match SOLVE_KEYS.iter().find(|s| **s == k) {
                 Some(s) => out.push(*s),
                 None => {
-                    return Err(WedgeError::InvalidParameter {
+                    return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
                         name: "quantities",
                         value: k.to_string(),
                         range: format!("keys of a solve report: {}", SOLVE_KEYS.join(",")),
-                    })
+                    }))
                 }
             }
         }
@@ -580,6 +580,7 @@ impl SolveReport {
                             Ok(WithError {
                                 value: a.exponent,
                                 error: a.exponent_error,
+                                kind: complexfn::ErrorKind::Propagated,
                             }),
                             floor,
                             digits,
@@ -766,11 +767,11 @@ impl StressReport {
         for fp in at {
             let f = fp.value();
             if !(f > 0.0 && f <= 1.0) {
-                return Err(WedgeError::InvalidParameter {
+                return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
                     name: "at",
                     value: fp.text().to_string(),
                     range: "(0, 1] (fractions r/(alpha t) of the contact half-width)".into(),
-                });
+                }));
             }
             let x = p.clone() * fp.to_real(&p);
             let x = if x > p { p.clone() } else { x };
@@ -839,11 +840,11 @@ impl FieldReport {
         for (x, y) in pts {
             let (xt, yt) = (x.to_real(case.p()), y.to_real(case.p()));
             let fv = homogeneous::field::at(&pot, &xt, &yt).map_err(|e| {
-                WedgeError::InvalidParameter {
+                WedgeError::InvalidParameter(complexfn::InvalidParameter {
                     name: "at",
                     value: format!("{}:{}", x.text(), y.text()),
                     range: format!("a point of the half-plane y < 0 ({e})"),
-                }
+                })
             })?;
             let c = fv.cartesian();
             let vals = [xt, yt, c.sxx, c.syy, c.sxy, c.vx, c.vy, c.ux, c.uy];

@@ -21,7 +21,7 @@
 use crate::cx::Cx;
 use crate::error::Result;
 use crate::plemelj::Side;
-use crate::quadrature::{tanh_sinh, CachedRules, Estimate, Point, QuadValue, TsOptions};
+use crate::quadrature::{tanh_sinh, CachedRules, Point, QuadValue, Quadrature, TsOptions};
 use crate::scalar::Real;
 
 /// A split point of [a, b] about a third of the way from c to the farther end.
@@ -43,7 +43,7 @@ fn split_at<T, V, G>(
     left_opts: TsOptions,
     right_opts: TsOptions,
     mut g: G,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -67,14 +67,10 @@ where
 }
 
 /// Sum of two estimates over adjacent intervals.
-fn combine<T: Real, V: QuadValue<T>>(l: Estimate<V>, r: Estimate<V>) -> Estimate<V> {
-    let mut value = l.value;
+fn combine<T: Real, V: QuadValue<T>>(l: Quadrature<V>, r: Quadrature<V>) -> Quadrature<V> {
+    let mut value = l.estimate.value;
     value.add_scaled(&r.value, &value.magnitude().one());
-    Estimate {
-        value,
-        error: l.error + r.error,
-        evals: l.evals + r.evals,
-    }
+    Quadrature::new(value, l.estimate.error + r.error, l.evals + r.evals)
 }
 
 fn point_at<T: Real>(a: &T, b: &T, v: &T) -> Point<T> {
@@ -96,7 +92,7 @@ pub fn principal_value<T, V, F>(
     c: &T,
     opts: TsOptions,
     mut phi: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -153,7 +149,7 @@ fn near_end_principal_value<T, V, F>(
     c: &T,
     opts: TsOptions,
     mut phi: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -250,7 +246,7 @@ pub fn cauchy_integral<T, F>(
     zeta: &Cx<T>,
     opts: TsOptions,
     mut phi: F,
-) -> Result<Estimate<Cx<T>>>
+) -> Result<Quadrature<Cx<T>>>
 where
     T: CachedRules,
     F: FnMut(&Point<T>) -> Cx<T>,
@@ -284,7 +280,7 @@ where
     }
     let two_pi = a.pi() * 2.0;
     // divide by 2 pi i: (x + iy)/(i 2pi) = (y - ix)/(2pi)
-    est.value = est.value.mul_neg_i().scale(&two_pi.recip());
+    est.estimate.value = est.estimate.value.mul_neg_i().scale(&two_pi.recip());
     est.error /= 2.0 * std::f64::consts::PI;
     Ok(est)
 }
@@ -298,7 +294,7 @@ pub fn cauchy_boundary<T, F>(
     side: Side,
     opts: TsOptions,
     mut phi: F,
-) -> Result<Estimate<Cx<T>>>
+) -> Result<Quadrature<Cx<T>>>
 where
     T: CachedRules,
     F: FnMut(&Point<T>) -> Cx<T>,
@@ -323,7 +319,7 @@ mod tests {
     fn plain_principal_value_is_a_logarithm_f64() {
         let (a, b) = (0.2_f64, 1.3_f64);
         for c in [0.25, 0.75, 1.29] {
-            let e: Estimate<f64> =
+            let e: Quadrature<f64> =
                 principal_value(&a, &b, &c, TsOptions::new(1e-15), |_p: &Point<f64>| 1.0).unwrap();
             let exact = ((b - c) / (c - a)).ln();
             assert!((e.value - exact).abs() < 1e-14, "{c}: {} {exact}", e.value);
@@ -334,7 +330,7 @@ mod tests {
     fn weighted_principal_value_with_endpoint_singularity() {
         // PV int_0^1 v^(-1/2)/(v - c) dv = ln((1 - sqrt c)/(1 + sqrt c))/sqrt c
         for c in [0.09_f64, 0.5, 0.81] {
-            let e: Estimate<f64> =
+            let e: Quadrature<f64> =
                 principal_value(&0.0, &1.0, &c, TsOptions::new(1e-15), |p: &Point<f64>| {
                     p.from_a.powf(-0.5)
                 })
@@ -351,7 +347,7 @@ mod tests {
         let a = Float::with_val(prec, 0);
         let b = Float::with_val(prec, 1);
         let c = Float::with_val(prec, 0.3);
-        let e: Estimate<Float> =
+        let e: Quadrature<Float> =
             principal_value(&a, &b, &c, TsOptions::new(1e-70), |p: &Point<Float>| {
                 p.from_a.clone().sqrt().recip()
             })
@@ -371,7 +367,7 @@ mod tests {
             let s = c.sqrt();
             let exact = ((1.0 - s) / (1.0 + s)).ln() / s;
             let tol = 1e-14 / s;
-            let e: Estimate<f64> =
+            let e: Quadrature<f64> =
                 principal_value(&0.0, &1.0, &c, TsOptions::new(1e-15), |p: &Point<f64>| {
                     p.from_a.powf(-0.5)
                 })
@@ -381,7 +377,7 @@ mod tests {
                 "{c}: {} {exact}",
                 e.value
             );
-            let e: Estimate<f64> = principal_value(
+            let e: Quadrature<f64> = principal_value(
                 &0.0,
                 &1.0,
                 &(1.0 - c),
@@ -407,16 +403,20 @@ mod tests {
         for xi in [0.2, 0.5, 0.9] {
             let up = cauchy_boundary(&a, &b, &xi, Side::Upper, TsOptions::new(1e-15), phi)
                 .unwrap()
+                .estimate
                 .value;
             let dn = cauchy_boundary(&a, &b, &xi, Side::Lower, TsOptions::new(1e-15), phi)
                 .unwrap()
+                .estimate
                 .value;
             let eps = 1e-9;
             let off_up = cauchy_integral(&a, &b, &Cx::new(xi, eps), TsOptions::new(1e-15), phi)
                 .unwrap()
+                .estimate
                 .value;
             let off_dn = cauchy_integral(&a, &b, &Cx::new(xi, -eps), TsOptions::new(1e-15), phi)
                 .unwrap()
+                .estimate
                 .value;
             let jump = off_up.clone() - &off_dn;
             let phi_xi = xi.exp() * (1.0 - xi).sqrt();
@@ -433,7 +433,7 @@ mod tests {
     #[test]
     fn f64_and_256_bit_principal_values_agree() {
         let c64 = 0.37_f64;
-        let e64: Estimate<f64> =
+        let e64: Quadrature<f64> =
             principal_value(&0.0, &1.0, &c64, TsOptions::new(1e-15), |p: &Point<f64>| {
                 p.v.cos() * p.from_a.powf(0.25)
             })
@@ -442,7 +442,7 @@ mod tests {
         let b = Float::with_val(256, 1);
         let c = Float::with_val(256, 0.37);
         let quarter = Float::with_val(256, 0.25);
-        let e: Estimate<Float> =
+        let e: Quadrature<Float> =
             principal_value(&a, &b, &c, TsOptions::new(1e-70), |p: &Point<Float>| {
                 p.v.clone().cos() * p.from_a.clone().powf(&quarter)
             })

@@ -4,7 +4,8 @@
 //! [`double_double`], [`cx`]), the radicals p_k with the cuts of the reference paper ([`branch`]), the Rayleigh
 //! family K, L, R and the Rayleigh root ([`rayleigh`]), Plemelj boundary values and the
 //! operator D ([`plemelj`]), Cauchy integrals and principal values ([`cauchy`]), the
-//! quadrature rules they rest on ([`quadrature`]) and the scalar root finders of the inverse
+//! quadrature rules they rest on ([`quadrature`]), small dense and band linear algebra
+//! ([`linalg`]) and the scalar root finders of the inverse
 //! solves ([`roots`]).
 //!
 //! Reference: "Dynamic indentation of an elastic half-plane by a rigid wedge: frictional and
@@ -19,6 +20,8 @@ pub mod cauchy;
 pub mod cx;
 pub mod double_double;
 pub mod error;
+pub mod estimate;
+pub mod linalg;
 pub mod plemelj;
 pub mod quadrature;
 pub mod rayleigh;
@@ -28,6 +31,7 @@ pub mod scalar;
 pub use branch::{p_boundary, p_k, Side};
 pub use cx::Cx;
 pub use double_double::Dd;
-pub use error::{Error, Result};
+pub use error::{Error, InvalidParameter, NoConvergence, Result};
+pub use estimate::{ErrorKind, Estimate};
 pub use rayleigh::{Rayleigh, RayleighValues};
 pub use scalar::{Precision, Real};

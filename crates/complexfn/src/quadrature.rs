@@ -13,6 +13,30 @@
 //!   [`gauss_legendre_doubling`], a driver with an error estimate from n and 2n nodes.
 //!
 //! The integrand receives a [`Point`]: the abscissa and its distances to both endpoints.
+//!
+//! # The other tanh-sinh implementation (`genuine::quad`)
+//! The genuine wedge solver keeps its own tanh-sinh rules (the module `quad` of the `genuine`
+//! crate, which depends on this one), and this module's rules serve the wedge crate and the
+//! rest of this layer. The two are not interchangeable:
+//! * variable map and node set: here the rule lives on [-1, 1] with steps 2^-k only, its
+//!   levels cached once per precision; `genuine::quad` places a rule of (0, 1) on each
+//!   interval, at any step h (a solver option such as `h_quad`), its nodes indexed by
+//!   t = k h formed in the working precision, so that the collocation points sit on the
+//!   quarter points of that same t-grid and the basis sampled once on the rule serves every
+//!   collocation row; it also has the single-exponential tanh map and the mixed
+//!   single/double-exponential map of the contour integrals' F-functions, which this module
+//!   does not;
+//! * truncation: here |t| <= t_max of the precision ([`Tails`], offsets down to 2^(-3 bits));
+//!   there from the precision and the weakest endpoint exponent of the case (`t_max_for`);
+//! * driver and error: [`tanh_sinh`] extrapolates the error from the last three levels, maps
+//!   endpoint singularities ([`EndExponent`]) and refuses a result short of its tolerance;
+//!   `genuine::quad::integrate_vec` integrates a vector of integrands from h = 1/2, stops on
+//!   the plain difference of two levels over the components it is told to check, and returns
+//!   that difference.
+//!
+//! Sharing one of them would change the nodes' rounding, the truncation or the stopping level
+//! of the other's integrals, and with them the reported digits of the solutions that rest on
+//! them.
 
 use std::collections::HashMap;
 use std::num::NonZeroUsize;
@@ -22,6 +46,7 @@ use gauss_quad::{GaussJacobi, GaussLegendre};
 
 use crate::cx::Cx;
 use crate::error::{Error, Result};
+use crate::estimate::{ErrorKind, Estimate};
 use crate::scalar::Real;
 
 /// An abscissa `v` of an interval [a, b] with `from_a = v - a` and `to_b = b - v`, each
@@ -145,15 +170,39 @@ impl<T: Real, const N: usize> QuadValue<T> for [T; N] {
     }
 }
 
-/// A quadrature result with its (absolute) error estimate.
+/// A quadrature result: the integral with its absolute error estimate (an [`Estimate`] of
+/// kind [`ErrorKind::Quadrature`], an over-estimate once the rule has converged) and the
+/// number of integrand evaluations it took. It reads as its estimate (`q.value`, `q.error`).
 #[derive(Clone, Debug)]
-pub struct Estimate<V> {
-    /// The integral.
-    pub value: V,
-    /// Estimated absolute error (an over-estimate once the rule has converged).
-    pub error: f64,
+pub struct Quadrature<V> {
+    /// The integral and its error estimate.
+    pub estimate: Estimate<V>,
     /// Number of integrand evaluations.
     pub evals: usize,
+}
+
+impl<V> Quadrature<V> {
+    /// The integral `value` with the estimated absolute error `error`, after `evals`
+    /// evaluations of the integrand.
+    pub fn new(value: V, error: f64, evals: usize) -> Self {
+        Quadrature {
+            estimate: Estimate::new(value, error, ErrorKind::Quadrature),
+            evals,
+        }
+    }
+}
+
+impl<V> std::ops::Deref for Quadrature<V> {
+    type Target = Estimate<V>;
+    fn deref(&self) -> &Estimate<V> {
+        &self.estimate
+    }
+}
+
+impl<V> std::ops::DerefMut for Quadrature<V> {
+    fn deref_mut(&mut self) -> &mut Estimate<V> {
+        &mut self.estimate
+    }
 }
 
 /// One node of the tanh-sinh rule on [-1, 1] for t >= 0: x = tanh(pi/2 sinh t) >= 0.
@@ -533,7 +582,7 @@ impl Tail {
 /// Returns the estimate of the last level and `|S_k - S_{k-1}|` as its error; fails with
 /// [`Error::NoConvergence`] when the finest cached level does not reach `opts.rel_tol`, and
 /// with [`Error::InvalidParameter`] for a declared exponent not above -1.
-pub fn tanh_sinh<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Estimate<V>>
+pub fn tanh_sinh<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -560,13 +609,13 @@ where
                     to_b: p.to_b.clone(),
                 })
             })?;
-            let mut value = l.value;
+            let mut value = l.estimate.value;
             value.add_scaled(&r.value, &a.one());
-            Ok(Estimate {
+            Ok(Quadrature::new(
                 value,
-                error: l.error + r.error,
-                evals: l.evals + r.evals,
-            })
+                l.estimate.error + r.error,
+                l.evals + r.evals,
+            ))
         }
     }
 }
@@ -606,18 +655,18 @@ fn mapped_end<T, V, F>(
     left: bool,
     opts: TsOptions,
     f: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
     F: FnMut(&Point<T>) -> V,
 {
     if !(e.gap_hi > 0.0 && e.gap_hi.is_finite()) {
-        return Err(Error::InvalidParameter {
+        return Err(Error::InvalidParameter(crate::error::InvalidParameter {
             name: "endpoint exponent",
             value: format!("{}", e.alpha),
-            range: "(-1, 0) (an integrable endpoint singularity)",
-        });
+            range: "(-1, 0) (an integrable endpoint singularity)".into(),
+        }));
     }
     if 1.0 / e.gap_hi > KAPPA_POWER_MAX {
         exponential_end(a, b, e, left, opts, f)
@@ -634,7 +683,7 @@ fn power_end<T, V, F>(
     left: bool,
     opts: TsOptions,
     mut f: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -740,7 +789,7 @@ fn exponential_end<T, V, F>(
     left: bool,
     opts: TsOptions,
     mut f: F,
-) -> Result<Estimate<V>>
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -761,11 +810,11 @@ where
         .min(s_cap)
         .max(s_prec.min(s_cap));
     if !(s_max > 1.0) {
-        return Err(Error::NoConvergence {
-            what: "tanh-sinh quadrature (an interval too short for its endpoint map)",
+        return Err(Error::NoConvergence(crate::error::NoConvergence {
+            what: "tanh-sinh quadrature (an interval too short for its endpoint map)".into(),
             reached: f64::INFINITY,
             asked: opts.rel_tol,
-        });
+        }));
     }
     let s_end = a.lit(s_max);
     let mut at = |s: &T| -> V {
@@ -784,16 +833,16 @@ where
     // working precision's round-off, whichever is larger
     let rel = (2f64.powi(-104)).max(4.0 * a.epsilon().to_f64());
     let tail_error = tail.magnitude().to_f64() * rel;
-    let mut value = body.value;
+    let mut value = body.estimate.value;
     value.add_scaled(&tail, &a.one());
-    Ok(Estimate {
+    Ok(Quadrature::new(
         value,
-        error: body.error + tail_error,
-        evals: body.evals + 1,
-    })
+        body.estimate.error + tail_error,
+        body.evals + 1,
+    ))
 }
 
-fn tanh_sinh_plain<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Estimate<V>>
+fn tanh_sinh_plain<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
@@ -963,18 +1012,14 @@ where
     if !(err <= opts.rel_tol * scale.max(f64::MIN_POSITIVE) || err <= opts.rel_tol * 1e-300) {
         // report, but let the caller decide: a NaN or non-convergence is an error
         if !err.is_finite() || err > opts.rel_tol.sqrt() * scale.max(f64::MIN_POSITIVE) {
-            return Err(Error::NoConvergence {
-                what: "tanh-sinh quadrature",
+            return Err(Error::NoConvergence(crate::error::NoConvergence {
+                what: "tanh-sinh quadrature".into(),
                 reached: if scale > 0.0 { err / scale } else { err },
                 asked: opts.rel_tol,
-            });
+            }));
         }
     }
-    Ok(Estimate {
-        value,
-        error: err,
-        evals,
-    })
+    Ok(Quadrature::new(value, err, evals))
 }
 
 /// Order of convergence per level assumed by [`extrapolated_error`].
@@ -1032,11 +1077,12 @@ fn f64_rule_cache() -> &'static Mutex<HashMap<RuleKey, Arc<F64Rule>>> {
 
 /// The n-point Gauss-Legendre rule on [-1, 1] (cached).
 pub fn gauss_legendre(n: usize) -> Result<Arc<F64Rule>> {
-    let nz = NonZeroUsize::new(n).ok_or(Error::InvalidParameter {
-        name: "quadrature degree",
-        value: "0".into(),
-        range: ">= 1",
-    })?;
+    let nz =
+        NonZeroUsize::new(n).ok_or(Error::InvalidParameter(crate::error::InvalidParameter {
+            name: "quadrature degree",
+            value: "0".into(),
+            range: ">= 1".into(),
+        }))?;
     let mut c = f64_rule_cache().lock().unwrap_or_else(|e| e.into_inner());
     Ok(c.entry((n, u64::MAX, u64::MAX))
         .or_insert_with(|| {
@@ -1051,15 +1097,18 @@ pub fn gauss_legendre(n: usize) -> Result<Arc<F64Rule>> {
 /// The n-point Gauss-Jacobi rule on [-1, 1] for the weight (1 - x)^alpha (1 + x)^beta,
 /// alpha, beta > -1 (cached per (n, alpha, beta)).
 pub fn gauss_jacobi(n: usize, alpha: f64, beta: f64) -> Result<Arc<F64Rule>> {
-    let nz = NonZeroUsize::new(n).ok_or(Error::InvalidParameter {
-        name: "quadrature degree",
-        value: "0".into(),
-        range: ">= 1",
-    })?;
-    let bad = |name, v: f64| Error::InvalidParameter {
-        name,
-        value: format!("{v}"),
-        range: "(-1, inf), finite",
+    let nz =
+        NonZeroUsize::new(n).ok_or(Error::InvalidParameter(crate::error::InvalidParameter {
+            name: "quadrature degree",
+            value: "0".into(),
+            range: ">= 1".into(),
+        }))?;
+    let bad = |name, v: f64| {
+        Error::InvalidParameter(crate::error::InvalidParameter {
+            name,
+            value: format!("{v}"),
+            range: "(-1, inf), finite".into(),
+        })
     };
     let a = gauss_quad::FiniteAboveNegOneF64::try_from(alpha)
         .map_err(|_| bad("jacobi alpha", alpha))?;
@@ -1115,7 +1164,7 @@ pub fn gauss_legendre_doubling<V: QuadValue<f64>, F: FnMut(&Point<f64>) -> V>(
     b: f64,
     n: usize,
     mut f: F,
-) -> Result<Estimate<V>> {
+) -> Result<Quadrature<V>> {
     let r1 = gauss_legendre(n)?;
     let r2 = gauss_legendre(2 * n)?;
     let i1 = r1.integrate(a, b, &mut f);
@@ -1126,11 +1175,7 @@ pub fn gauss_legendre_doubling<V: QuadValue<f64>, F: FnMut(&Point<f64>) -> V>(
             what: "Gauss-Legendre quadrature",
         });
     }
-    Ok(Estimate {
-        error,
-        value: i2,
-        evals: 3 * n,
-    })
+    Ok(Quadrature::new(i2, error, 3 * n))
 }
 
 #[cfg(test)]
@@ -1277,7 +1322,7 @@ mod tests {
             (p.from_a.clone().ln() * &g).exp() / p.from_a.clone() / p.to_b.clone().sqrt()
                 * (p.v.clone() + 1.0)
         };
-        let e: Estimate<T> = tanh_sinh(&like.zero(), &like.one(), opts, f).unwrap();
+        let e: Quadrature<T> = tanh_sinh(&like.zero(), &like.one(), opts, f).unwrap();
         let exact = beta_sum(gap);
         let actual = Float::with_val(600, e.value.to_mpfr(600) - &exact).abs() / &exact;
         (actual.to_f64(), e.error / exact.to_f64())

@@ -67,11 +67,11 @@ impl<T: Real> Rayleigh<T> {
     pub fn new(m: T) -> Result<Self> {
         let mf = m.to_f64();
         if !m.is_finite() || !(m > 0.0) || !(m.clone().sqr() < 0.75) {
-            return Err(Error::InvalidParameter {
+            return Err(Error::InvalidParameter(crate::error::InvalidParameter {
                 name: "m = c2/c1",
                 value: format!("{mf}"),
-                range: "(0, sqrt(3)/2)",
-            });
+                range: "(0, sqrt(3)/2)".into(),
+            }));
         }
         let m2 = m.clone().sqr();
         let inv_m2 = m2.clone().recip();
@@ -270,11 +270,11 @@ fn rayleigh_cubic_root<T: Real>(m2: &T) -> Result<T> {
             return Ok(x);
         }
     }
-    Err(Error::NoConvergence {
-        what: "Rayleigh root",
+    Err(Error::NoConvergence(crate::error::NoConvergence {
+        what: "Rayleigh root".into(),
         reached: (hi - lo).to_f64(),
         asked: eps.to_f64(),
-    })
+    }))
 }
 
 #[cfg(test)]

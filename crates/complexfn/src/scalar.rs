@@ -35,11 +35,11 @@ impl Precision {
     /// Errors if `digits == 0`.
     pub fn from_digits(digits: u32, guard: u32) -> Result<Self> {
         if digits == 0 {
-            return Err(Error::InvalidParameter {
+            return Err(Error::InvalidParameter(crate::error::InvalidParameter {
                 name: "digits",
                 value: "0".into(),
-                range: ">= 1",
-            });
+                range: ">= 1".into(),
+            }));
         }
         let bits = (f64::from(digits) * std::f64::consts::LOG2_10).ceil() as u32 + guard;
         Ok(Precision::Bits(bits))
@@ -56,11 +56,11 @@ impl Precision {
     /// Validate a precision in bits: 0 and 1 are refused (MPFR needs at least 2 bits).
     pub fn checked_bits(bits: u32) -> Result<Self> {
         if !(2..=1 << 24).contains(&bits) {
-            return Err(Error::InvalidParameter {
+            return Err(Error::InvalidParameter(crate::error::InvalidParameter {
                 name: "precision_bits",
                 value: bits.to_string(),
-                range: "2 ..= 16777216",
-            });
+                range: "2 ..= 16777216".into(),
+            }));
         }
         Ok(Precision::Bits(bits))
     }

@@ -5,19 +5,17 @@ use thiserror::Error;
 /// Errors of the genuine solution; parameter errors name the parameter, its value and range.
 #[derive(Debug, Clone, Error, PartialEq)]
 pub enum GenuineError {
-    /// A parameter outside its admissible range, or not finite.
-    #[error("invalid {name} = {value}: admissible range is {range}")]
-    InvalidParameter {
-        /// Parameter name.
-        name: &'static str,
-        /// The offending value.
-        value: String,
-        /// The admissible range.
-        range: String,
-    },
-    /// The linear solve or a root search failed.
+    /// A parameter outside its admissible range, or not finite (the shape shared by every
+    /// crate, [`complexfn::InvalidParameter`]).
+    #[error(transparent)]
+    InvalidParameter(#[from] complexfn::InvalidParameter),
+    /// A step of the solve that gave no usable result (too few distinct collocation points, a
+    /// degenerate slope condition, a non-finite value, an apex exponent of the wrong sign):
+    /// not a tolerance missed, so it carries a description rather than the reached and asked
+    /// errors of [`complexfn::NoConvergence`]. The message keeps the command line's wording,
+    /// "{what} did not converge: {detail}".
     #[error("{what} did not converge: {detail}")]
-    NoConvergence {
+    SolveFailed {
         /// What was being computed.
         what: &'static str,
         /// Details.
@@ -39,11 +37,7 @@ pub(crate) fn invalid(
     value: impl std::fmt::Display,
     range: impl Into<String>,
 ) -> GenuineError {
-    GenuineError::InvalidParameter {
-        name,
-        value: value.to_string(),
-        range: range.into(),
-    }
+    complexfn::InvalidParameter::new(name, value, range).into()
 }
 
 /// The genuine solver's errors as the wedge crate's (for [`wedge::ContactSolution`]): a

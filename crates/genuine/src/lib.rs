@@ -4,7 +4,6 @@
 //! * [`apex`]: the Mellin eigen-equation at the apex and its exponents;
 //! * [`basis`]: the spectral basis carrying the edge and apex exponents;
 //! * [`quad`]: the quadrature rules (fixed-step, exact endpoint offsets, any precision);
-//! * [`lsq`]: least squares by Householder QR with column pivoting, any precision;
 //! * [`solver`]: the singular integral equation, its collocation solve and the solved case
 //!   [`GenuineCase`];
 //! * [`solution`]: [`GenuineCase`] behind the one interface of solved cases,
@@ -15,7 +14,6 @@ pub mod apex;
 pub mod basis;
 pub mod error;
 pub mod kernels;
-pub mod lsq;
 pub mod quad;
 pub mod solution;
 pub mod solver;

@@ -15,6 +15,19 @@
 //! lost as delta^e; the truncations ([`t_max`], [`t_max_for`] for tanh-sinh, the reach of
 //! [`se_de_unit`]) are therefore chosen from the working precision and the weakest endpoint
 //! exponent, so that delta^e < 2^-bits.
+//!
+//! Why these rules are not those of [`complexfn::quadrature`] (which serve the wedge crate):
+//! that module's tanh-sinh rule lives on [-1, 1] at the steps 2^-k only, its levels cached per
+//! precision and truncated by the precision alone, and its driver extrapolates the error from
+//! three levels and maps endpoint singularities. The collocation solve needs a rule at any
+//! step h (an option), its nodes indexed by t = k h in the working precision (the collocation
+//! points are the quarter points of the same t-grid, and one sampling of the basis serves all
+//! rows), truncated by the case's endpoint exponents ([`t_max_for`]), and the
+//! single-exponential and mixed maps of the contour integrals ([`tanh_unit`],
+//! [`se_de_unit`]); [`integrate_vec`] sums a vector of integrands and stops on the plain
+//! difference of two levels. Replacing either by the other would change the rounding of the
+//! nodes, the truncation or the stopping level, and so the solutions' reported digits; the
+//! module documentation of [`complexfn::quadrature`] gives the same comparison from its side.
 
 use complexfn::Real;
 

@@ -38,12 +38,20 @@ impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
     fn v_hat(&self) -> WResult<WithError<T>> {
         let value = GenuineCase::v_hat(self);
         let error = self.error_estimate() + self.rayleigh_error(&value);
-        Ok(WithError { value, error })
+        Ok(WithError {
+            value,
+            error,
+            kind: complexfn::ErrorKind::Fit,
+        })
     }
     fn force_hat(&self) -> WResult<WithError<T>> {
         let (value, error) = self.force_hat_with_error();
         let error = error + self.rayleigh_error(&value);
-        Ok(WithError { value, error })
+        Ok(WithError {
+            value,
+            error,
+            kind: complexfn::ErrorKind::Fit,
+        })
     }
     /// The larger of V's and the force's relative estimates, plus the contour integrals'
     /// error of the solution's scale (the stress is proportional to the coefficients, V is
@@ -62,7 +70,11 @@ impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
         let value = GenuineCase::stress_hat(self, x.clone())?;
         let rel = ContactSolution::rel_error(self)?;
         let error = rel * value.to_f64().abs();
-        Ok(WithError { value, error })
+        Ok(WithError {
+            value,
+            error,
+            kind: complexfn::ErrorKind::Fit,
+        })
     }
     fn regime(&self) -> ApexRegime {
         self.exponents().kind
@@ -76,7 +88,11 @@ impl<T: CachedRules> ContactSolution<T> for GenuineCase<T> {
             exponent,
             // a root of the eigen-equation in closed form
             exponent_error: 0.0,
-            amplitude: WithError { value, error },
+            amplitude: WithError {
+                value,
+                error,
+                kind: complexfn::ErrorKind::Fit,
+            },
         })
     }
     /// A (p/x)^lambda, A arccosh(p/x) (the classical case, where the genuine solution is the

@@ -179,7 +179,7 @@ where
         acc
     };
     let est = tanh_sinh(x, &one, default_options(x.prec()), integrand)?;
-    let [ap, bp, am, bm] = est.value.0;
+    let [ap, bp, am, bm] = est.estimate.value.0;
     Ok(Cx::new((ap.re - am.re) * &pref, (bp.re - bm.re) * &pref))
 }
 

@@ -13,7 +13,7 @@
 //! measure (`--nocapture`).
 use impact::{EdgeLaw, ImpactCase};
 
-fn single(dx: f64) -> (impact::case::Run, f64) {
+fn single(dx: f64) -> (impact::run::Run, f64) {
     let law = match std::env::var("LAW").as_deref() {
         Ok("kinematic") => EdgeLaw::Kinematic,
         _ => EdgeLaw::Signorini,
@@ -30,7 +30,7 @@ fn single(dx: f64) -> (impact::case::Run, f64) {
 }
 
 /// The reported edge at t_n, or with `RAW` set the per-step edges interpolated to t_n.
-fn edge(run: &impact::case::Run, n: usize) -> f64 {
+fn edge(run: &impact::run::Run, n: usize) -> f64 {
     if std::env::var("RAW").is_ok() {
         run.edge_interpolated(n).expect("a step")
     } else {

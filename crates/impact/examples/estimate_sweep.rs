@@ -81,7 +81,7 @@ fn main() {
                     continue;
                 };
                 let v = pick(r);
-                let Some(err) = v.err else { continue };
+                let Some(err) = v.error else { continue };
                 let (t4, t2) = (pick(&a).value, pick(&b).value);
                 // the reference's own error: its difference from the grid twice coarser,
                 // over 2^1 - 1 (first order), a bound when the order is at least one

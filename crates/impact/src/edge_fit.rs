@@ -15,10 +15,11 @@
 use lamb::edge::{EdgeBehaviour, SpeedRange};
 use lamb::HalfPlane;
 
-use crate::case::{Run, Solution};
 use crate::error::{invalid, ImpactError, Result};
-use crate::linalg::Lu;
 use crate::march::EdgeLaw;
+use crate::run::Run;
+use crate::solved::SolvedImpact;
+use complexfn::linalg::Lu;
 
 /// The fit's upper end in s = d/b for a driven wedge (its pressure has a logarithmic peak at
 /// the apex, s = 1).
@@ -64,7 +65,7 @@ pub struct ExponentFit {
 /// keeps the face free of a kink there, `docs/edge.md`, section 5); the cells next to the edge are
 /// left out (at least four, and the cells the edge crosses in two steps). Errors: a run too
 /// short or too coarse for the fit, an edge speed at a range boundary, a failed fit.
-pub fn fit_self_similar_edge(sol: &Solution) -> Result<EdgeExponentCheck> {
+pub fn fit_self_similar_edge(sol: &SolvedImpact) -> Result<EdgeExponentCheck> {
     let run = &sol.runs[0];
     let too_short = || ImpactError::Grid {
         name: "end",

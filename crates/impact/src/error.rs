@@ -6,16 +6,10 @@ use thiserror::Error;
 /// Errors of the impact engine.
 #[derive(Debug, Clone, Error, PartialEq)]
 pub enum ImpactError {
-    /// An input outside its admissible range, or not finite.
-    #[error("invalid {name} = {value}: admissible range is {range}")]
-    InvalidParameter {
-        /// Input name as the documentation spells it.
-        name: &'static str,
-        /// The offending value, printed.
-        value: String,
-        /// The admissible range.
-        range: String,
-    },
+    /// A parameter outside its admissible range, or not finite (the shape shared by every
+    /// crate, [`complexfn::InvalidParameter`]).
+    #[error(transparent)]
+    InvalidParameter(#[from] complexfn::InvalidParameter),
     /// The grid cannot represent the run (too few cells across the contact, too many steps).
     #[error("the grid cannot resolve this run: {reason} (input {name})")]
     Grid {
@@ -45,9 +39,5 @@ pub(crate) fn invalid(
     value: impl std::fmt::Display,
     range: impl Into<String>,
 ) -> ImpactError {
-    ImpactError::InvalidParameter {
-        name,
-        value: value.to_string(),
-        range: range.into(),
-    }
+    complexfn::InvalidParameter::new(name, value, range).into()
 }

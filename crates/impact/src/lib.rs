@@ -19,15 +19,20 @@ pub mod history;
 pub(crate) mod linalg;
 pub mod march;
 pub mod profile;
+pub mod run;
 pub mod scalar;
+pub mod solve;
+pub mod solved;
 pub mod striker;
 pub mod tables;
 
-pub use case::{
-    coarse_means, Drive, HistoryRow, ImpactCase, PressureProfile, Progress, Rebound, ReferenceCase,
-    Solution, Stage, Stop, Value, PEAK_DROP, REFERENCE,
-};
+pub use case::{Drive, ImpactCase, ReferenceCase, Stop, REFERENCE};
 pub use error::{ImpactError, Result};
 pub use march::EdgeLaw;
 pub use profile::Profile;
+pub use run::Run;
+pub use solve::Progress;
+pub use solved::{
+    coarse_means, HistoryRow, PressureProfile, Rebound, SolvedImpact, Stage, Value, PEAK_DROP,
+};
 pub use striker::{ShellStriker, Striker, StrikerMaterial};

@@ -1,195 +1,14 @@
-//! The step's linear systems (`docs/impact.md`, section 7): LU factorisations with partial
-//! pivoting, dense and banded, and the contact system M = B + gamma 1 w^T (B the current
-//! step's coefficients, banded when the kernels are causal with a finite reach in one step;
-//! gamma 1 w^T the rigid striker's coupling through its equation of motion, every row the
-//! same) solved with the Sherman-Morrison formula on B's factorisation.
+//! The contact system of the march's steps (`docs/impact.md`, section 7):
+//! M = B + gamma 1 w^T (B the current step's coefficients, banded when the kernels are causal
+//! with a finite reach in one step; gamma 1 w^T the rigid striker's coupling through its
+//! equation of motion, every row the same), solved with the Sherman-Morrison formula on B's
+//! factorisation. The factorisations themselves (dense and band LU with partial pivoting) are
+//! the shared ones of [`complexfn::linalg`]; this rank-one coupling stays here because it is
+//! the march's own (the striker's equation of motion), not a general solver.
+
+use complexfn::linalg::{BandLu, Lu};
 
 use crate::scalar::Scalar;
-
-/// The LU factorisation with partial pivoting of a row-major n x n matrix.
-#[derive(Debug)]
-pub(crate) struct Lu<T = f64> {
-    n: usize,
-    /// U on and above the diagonal, the multipliers of L below it.
-    a: Vec<T>,
-    /// The row swapped into place at each column.
-    piv: Vec<usize>,
-}
-
-impl<T: Scalar> Lu<T> {
-    /// Factorises `a`; `None` when a pivot vanishes.
-    pub(crate) fn new(mut a: Vec<T>, n: usize) -> Option<Self> {
-        let mut piv = Vec::with_capacity(n);
-        for c in 0..n {
-            let mut p = c;
-            for i in c + 1..n {
-                if a[i * n + c].abs() > a[p * n + c].abs() {
-                    p = i;
-                }
-            }
-            if !(a[p * n + c].abs() > 0.0) {
-                return None;
-            }
-            if p != c {
-                for j in 0..n {
-                    a.swap(c * n + j, p * n + j);
-                }
-            }
-            piv.push(p);
-            let d = a[c * n + c];
-            for i in c + 1..n {
-                let f = a[i * n + c] / d;
-                a[i * n + c] = f;
-                if f != 0.0 {
-                    for j in c + 1..n {
-                        let acj = a[c * n + j];
-                        a[i * n + j] -= f * acj;
-                    }
-                }
-            }
-        }
-        Some(Lu { n, a, piv })
-    }
-
-    /// The solution of a x = r; `None` when it is not finite.
-    pub(crate) fn solve(&self, r: &[T]) -> Option<Vec<T>> {
-        let (n, a) = (self.n, &self.a);
-        let mut x = r.to_vec();
-        // the rows were swapped whole (multipliers included): all swaps first, then L
-        for (c, &p) in self.piv.iter().enumerate() {
-            x.swap(c, p);
-        }
-        for c in 0..n {
-            let xc = x[c];
-            if xc != 0.0 {
-                for i in c + 1..n {
-                    x[i] -= a[i * n + c] * xc;
-                }
-            }
-        }
-        for i in (0..n).rev() {
-            let mut s = x[i];
-            for j in i + 1..n {
-                s -= a[i * n + j] * x[j];
-            }
-            x[i] = s / a[i * n + i];
-        }
-        x.iter().all(|v| v.is_finite()).then_some(x)
-    }
-}
-
-/// The LU factorisation with partial pivoting of an n x n band matrix with `kl` sub- and
-/// `ku` super-diagonals, in column-major band storage (LAPACK's `gbtrf` layout: the row swaps
-/// widen U to kl + ku super-diagonals). O(n kl (kl + ku)) to factorise, O(n (2 kl + ku)) to
-/// solve.
-#[derive(Debug)]
-pub(crate) struct BandLu<T = f64> {
-    n: usize,
-    kl: usize,
-    ku: usize,
-    /// Column j holds rows j - kl - ku ..= j + kl at offsets 0 ..= 2 kl + ku.
-    ab: Vec<T>,
-    /// The row swapped into place at each column.
-    piv: Vec<usize>,
-}
-
-impl<T: Scalar> BandLu<T> {
-    fn at(&self, i: usize, j: usize) -> usize {
-        j * (2 * self.kl + self.ku + 1) + self.kl + self.ku + i - j
-    }
-
-    /// Factorises the matrix whose entries in the band (i - kl <= j <= i + ku)
-    /// are `entry(i, j)`; `None` when a pivot vanishes.
-    pub(crate) fn new(
-        n: usize,
-        kl: usize,
-        ku: usize,
-        entry: impl Fn(usize, usize) -> T,
-    ) -> Option<Self> {
-        let ld = 2 * kl + ku + 1;
-        let mut lu = BandLu {
-            n,
-            kl,
-            ku,
-            ab: vec![T::of(0.0); n * ld],
-            piv: Vec::with_capacity(n),
-        };
-        for j in 0..n {
-            for i in j.saturating_sub(ku)..(j + kl + 1).min(n) {
-                let k = lu.at(i, j);
-                lu.ab[k] = entry(i, j);
-            }
-        }
-        for c in 0..n {
-            let last = (c + kl).min(n - 1);
-            let right = (c + kl + ku).min(n - 1);
-            let mut p = c;
-            for i in c + 1..=last {
-                if lu.ab[lu.at(i, c)].abs() > lu.ab[lu.at(p, c)].abs() {
-                    p = i;
-                }
-            }
-            if !(lu.ab[lu.at(p, c)].abs() > 0.0) {
-                return None;
-            }
-            lu.piv.push(p);
-            if p != c {
-                // U's part of the two rows (the multipliers stay: L is applied with the swaps
-                // interleaved)
-                for j in c..=right {
-                    let (a, b) = (lu.at(c, j), lu.at(p, j));
-                    lu.ab.swap(a, b);
-                }
-            }
-            let d = lu.ab[lu.at(c, c)];
-            for i in c + 1..=last {
-                let ic = lu.at(i, c);
-                let f = lu.ab[ic] / d;
-                lu.ab[ic] = f;
-                if f != 0.0 {
-                    for j in c + 1..=right {
-                        let (ij, cj) = (lu.at(i, j), lu.at(c, j));
-                        let acj = lu.ab[cj];
-                        lu.ab[ij] -= f * acj;
-                    }
-                }
-            }
-        }
-        Some(lu)
-    }
-
-    /// The solution of a x = r; `None` when it is not finite.
-    pub(crate) fn solve(&self, r: &[T]) -> Option<Vec<T>> {
-        let n = self.n;
-        let ld = 2 * self.kl + self.ku + 1;
-        let mut x = r.to_vec();
-        for c in 0..n {
-            x.swap(c, self.piv[c]);
-            let xc = x[c];
-            let last = (c + self.kl).min(n - 1);
-            if xc != 0.0 && last > c {
-                // column c's multipliers lie contiguously below its diagonal
-                let l = &self.ab[self.at(c + 1, c)..=self.at(last, c)];
-                for (xi, m) in x[c + 1..=last].iter_mut().zip(l) {
-                    *xi -= *m * xc;
-                }
-            }
-        }
-        for i in (0..n).rev() {
-            let end = (i + self.kl + self.ku).min(n - 1);
-            let mut s = x[i];
-            if end > i {
-                // row i of U steps by ld - 1 through the band storage
-                let u = self.ab[self.at(i, i + 1)..].iter().step_by(ld - 1);
-                for (uij, xj) in u.zip(&x[i + 1..=end]) {
-                    s -= *uij * *xj;
-                }
-            }
-            x[i] = s / self.ab[self.at(i, i)];
-        }
-        x.iter().all(|v| v.is_finite()).then_some(x)
-    }
-}
 
 /// A factorised contact system M.
 #[derive(Debug)]
@@ -275,39 +94,10 @@ mod tests {
             .fold(0.0, f64::max)
     }
 
-    /// The LU factorisation solves a system that needs pivoting (a zero leading entry) to its
-    /// residual's rounding, for several right-hand sides, and refuses a singular matrix.
+    /// The rank-one coupling of a band matrix whose pivots need row swaps, through
+    /// Sherman-Morrison, equals the dense solve of the coupled matrix.
     #[test]
-    fn lu_solves_with_pivoting_and_refuses_a_singular_matrix() {
-        let n = 7;
-        let a: Vec<f64> = (0..n * n)
-            .map(|k| {
-                let (i, j) = (k / n, k % n);
-                if i == 0 && j == 0 {
-                    0.0
-                } else {
-                    1.0 / (1.0 + (i as f64 - j as f64).abs()) + ((i * 7 + j * 3) % 5) as f64 * 0.1
-                }
-            })
-            .collect();
-        let lu = Lu::new(a.clone(), n).unwrap();
-        for r in [vec![1.0; n], (0..n).map(|i| i as f64 - 3.0).collect()] {
-            let x = lu.solve(&r).unwrap();
-            assert!(residual(&|i, j| a[i * n + j], n, &x, &r) < 1e-12);
-        }
-        // a column of zeros: no pivot
-        let mut sing = a;
-        for i in 0..n {
-            sing[i * n + 3] = 0.0;
-        }
-        assert!(Lu::new(sing, n).is_none());
-    }
-
-    /// A band matrix whose pivots need row swaps (small diagonal, larger sub-diagonals):
-    /// the banded factorisation's solution has a rounding-level residual, and the rank-one
-    /// coupling through Sherman-Morrison equals the dense solve of the coupled matrix.
-    #[test]
-    fn band_lu_pivots_and_the_coupled_system_matches_the_dense_one() {
+    fn the_coupled_band_system_matches_the_dense_one() {
         let (n, kl, ku) = (40, 3, 2);
         let a = move |i: usize, j: usize| -> f64 {
             let d = j as i64 - i as i64;
@@ -319,16 +109,7 @@ mod tests {
                 1.0 / (1.0 + d.abs() as f64) + ((i * 5 + j * 3) % 7) as f64 * 0.05
             }
         };
-        let lu = BandLu::new(n, kl, ku, a).unwrap();
-        assert!(lu.piv.iter().enumerate().any(|(c, &p)| p != c));
         let r: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
-        let x = lu.solve(&r).unwrap();
-        assert!(
-            residual(&a, n, &x, &r) < 1e-11,
-            "{}",
-            residual(&a, n, &x, &r)
-        );
-
         let gamma = 0.37;
         let w: Vec<f64> = (0..n).map(|j| 1.0 + 0.1 * j as f64).collect();
         let wc = w.clone();
@@ -341,8 +122,6 @@ mod tests {
         for (u, v) in xb.iter().zip(&xd) {
             assert!((u - v).abs() < 1e-10 * (1.0 + v.abs()), "{u} vs {v}");
         }
-        // a singular band matrix is refused
-        assert!(BandLu::new(n, kl, ku, |i, j| if j == 5 { 0.0 } else { a(i, j) }).is_none());
     }
 
     /// The same factorisations in double-double: the residuals fall to that precision's

@@ -96,7 +96,7 @@ impl<T: Scalar + CachedRules> Tables<T> {
     /// absolute error estimate.
     fn xi_at(&self, x: T, t: T) -> Result<(T, f64)> {
         let e = self.half_plane.cell_mean_primitive_zz(&x, &t)?;
-        Ok((e.value, e.err))
+        Ok((e.value, e.error))
     }
 
     /// Makes a(k, l) available for k <= kmax and l <= lmax.
@@ -209,7 +209,7 @@ mod tests {
         /// Phi(x, t) (normal displacement, normal load) and its error estimate.
         fn phi(&self, x: f64, t: f64) -> Result<(f64, f64)> {
             let e = self.hp.space_time_primitive(1, &x, &t)?.zz;
-            Ok((e.value, e.err))
+            Ok((e.value, e.error))
         }
 
         /// Int_a^b Phi(x, t) dx by two rules (sizes `RULE_FINE`, `RULE_COARSE`) after the
@@ -318,15 +318,15 @@ mod tests {
                     let scale = want.abs().max(1e-300);
                     worst = worst.max(diff / scale);
                     assert!(
-                        diff <= 10.0 * (qerr + got.err) + 1e-13 * scale,
+                        diff <= 10.0 * (qerr + got.error) + 1e-13 * scale,
                         "nu {nu}, Xi({j}, {t}) = {} closed form, {want} by quadrature (errors {:e}, {qerr:e})",
                         got.value,
-                        got.err
+                        got.error
                     );
                     assert!(
-                        got.err <= 1e-11 * scale,
+                        got.error <= 1e-11 * scale,
                         "nu {nu}, Xi({j}, {t}): stated {:e} of {scale:e}",
-                        got.err
+                        got.error
                     );
                 }
             }

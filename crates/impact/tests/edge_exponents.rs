@@ -17,7 +17,7 @@ const THETA: f64 = 80.0;
 /// to the nearest whole number of steps of kappa dx (kappa = 2): the run's time step is the end
 /// over its number of steps, and the fits of the edges beyond c_R are sensitive to it (a step
 /// 3e-4 shorter moves the Rayleigh-shear edge's fitted exponent from -0.5086 to -0.5134).
-fn driven_wedge(v: f64, law: EdgeLaw, end: f64, dx: f64) -> impact::Solution {
+fn driven_wedge(v: f64, law: EdgeLaw, end: f64, dx: f64) -> impact::SolvedImpact {
     let end = (end / (2.0 * dx)).round() * 2.0 * dx;
     let mut case = ImpactCase::new(
         0.25,
@@ -35,7 +35,7 @@ fn driven_wedge(v: f64, law: EdgeLaw, end: f64, dx: f64) -> impact::Solution {
 /// speed range is `range`, the law selects `selected`, the fit covers more than 1.9 decades of
 /// the distance from the edge and is within 1e-2 of the selected exponent.
 fn assert_fitted_exponent(
-    sol: &impact::Solution,
+    sol: &impact::SolvedImpact,
     range: SpeedRange,
     selected: f64,
 ) -> EdgeExponentCheck {

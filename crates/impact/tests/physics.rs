@@ -256,7 +256,7 @@ fn refinement_converges_within_the_stated_errors() {
     for r in &rc {
         if let Some(f) = rf.iter().find(|x| (x.t - r.t).abs() < 1e-9) {
             for (c, fv) in [(r.h, f.h), (r.force, f.force), (r.b, f.b)] {
-                let err = c.err.unwrap();
+                let err = c.error.unwrap();
                 assert!(
                     (c.value - fv.value).abs() <= err + 1e-14,
                     "t = {}: change {} against stated {} (value {})",

@@ -7,7 +7,7 @@ mod common;
 
 use common::m2;
 use impact::march::StepState;
-use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile, Solution};
+use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile, SolvedImpact};
 
 /// The mean of the profile over cell i of width dx (cell 0 over its right half), by the
 /// same 3-point Gauss-Legendre rule as the march's conditions.
@@ -30,7 +30,7 @@ fn cell_mean(profile: &Profile, dx: f64, i: usize) -> Option<f64> {
 /// no cell beyond the contact (within the displacements the step kept) whose mean gap
 /// w - (h - mean f) is below -`tol` times the largest penetration. Returns the most negative
 /// pressure over the largest and the most negative relative gap.
-fn unilateral(sol: &Solution, tol: f64) -> (f64, f64) {
+fn unilateral(sol: &SolvedImpact, tol: f64) -> (f64, f64) {
     let mut worst = (0.0f64, 0.0f64);
     for run in &sol.runs {
         let dx = run.dx;
@@ -72,7 +72,7 @@ fn unilateral(sol: &Solution, tol: f64) -> (f64, f64) {
 
 /// After the last separation the striker flies free: its speed is constant and h grows
 /// linearly, on every level.
-fn flies_free(sol: &Solution) {
+fn flies_free(sol: &SolvedImpact) {
     for run in &sol.runs {
         let sep = *run.separations.last().expect("a separation");
         let after: Vec<&StepState> = run.steps.iter().filter(|s| s.t > sep + run.dt).collect();
@@ -122,14 +122,14 @@ fn reference_case_separates_and_flies_free() {
     let closure = e.value * e.value + rb.energy_to_half_plane.value - 1.0;
     eprintln!(
         "separation {:.4} +- {:?}, restitution {:.6} +- {:?}, to the half-plane {:.6}, closure {closure:.2e}, largest |defect| {worst:.2e}, least p/pmax {pmin:.1e}, least gap/hmax {gmin:.1e}",
-        rb.separation.value, rb.separation.err, e.value, e.err, rb.energy_to_half_plane.value
+        rb.separation.value, rb.separation.error, e.value, e.error, rb.energy_to_half_plane.value
     );
     assert!(worst < 1e-3, "energy defect {worst:e}");
     assert!(closure.abs() < 1e-3, "energy closure {closure:e}");
     assert!(e.value > 0.0 && e.value < 1.0);
-    let err = e.err.expect("an estimate of the restitution");
+    let err = e.error.expect("an estimate of the restitution");
     assert!(err > 0.0 && err < 5e-4, "restitution estimate {err:e}");
-    assert!(rb.separation.err.unwrap() <= 0.05);
+    assert!(rb.separation.error.unwrap() <= 0.05);
     assert_eq!(rb.reimpacts, 0);
 }
 
@@ -153,13 +153,13 @@ fn rebound_against_a_finer_grid() {
         "restitution {:.6} (R/200) against {:.6} (R/800): {de:.1e}, stated {:.1e}; separation {:.4} against {:.4}: {ds:.3}, stated {:.3}",
         coarse.restitution.value,
         fine.restitution.value,
-        coarse.restitution.err.unwrap(),
+        coarse.restitution.error.unwrap(),
         coarse.separation.value,
         fine.separation.value,
-        coarse.separation.err.unwrap()
+        coarse.separation.error.unwrap()
     );
-    assert!(de < 5e-4 && de <= coarse.restitution.err.unwrap());
-    assert!(ds < 0.05 && ds <= coarse.separation.err.unwrap());
+    assert!(de < 5e-4 && de <= coarse.restitution.error.unwrap());
+    assert!(ds < 0.05 && ds <= coarse.separation.error.unwrap());
 }
 
 /// To the separation: the run ends shortly after the striker leaves, at the same rebound as
@@ -226,7 +226,7 @@ fn light_strikers_neither_pull_nor_gain_energy() {
         let rb = sol.rebound().unwrap();
         eprintln!(
             "{name}: restitution {:.4} +- {:?}, largest defect {gain:.2e}",
-            rb.restitution.value, rb.restitution.err
+            rb.restitution.value, rb.restitution.error
         );
         assert!(gain < 1e-6, "{name} gains energy: {gain:e}");
         flies_free(&sol);
@@ -320,7 +320,7 @@ fn random_free_impacts_keep_the_unilateral_conditions() {
                 r.t
             );
             let d = r.energy_defect.unwrap();
-            let err = d.err.unwrap();
+            let err = d.error.unwrap();
             assert!(
                 d.value.abs() <= err + 1e-12,
                 "{label}: energy defect {:e} beyond its estimate {err:e} at {}",
@@ -392,7 +392,7 @@ fn driven_runs_stand_at_their_times() {
         // every level has a value at every reported time, so every row has its estimate
         assert!(rows
             .iter()
-            .all(|r| r.h.err.is_some() && r.force.err.is_some()));
+            .all(|r| r.h.error.is_some() && r.force.error.is_some()));
     }
 }
 

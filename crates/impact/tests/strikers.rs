@@ -407,7 +407,8 @@ fn energy_balance_with_deformable_strikers() {
 #[test]
 fn deformable_striker_inputs_are_checked() {
     let named = |c: ImpactCase, what: &str| match c.solve(|_| {}) {
-        Err(ImpactError::InvalidParameter { name, .. }) => {
+        Err(ImpactError::InvalidParameter(p)) => {
+            let name = p.name;
             assert!(name.contains(what), "{name} does not name {what}")
         }
         other => panic!("{what}: expected a refusal, got {:?}", other.map(|_| ())),

@@ -48,7 +48,7 @@ pub enum TimeShape {
 fn add<T: Real>(acc: &mut Triple<Estimate<T>>, t: Triple<Estimate<T>>, sign: f64) {
     let f = |a: &mut Estimate<T>, b: Estimate<T>| {
         a.value += b.value * sign;
-        a.err += b.err;
+        a.error += b.error;
     };
     f(&mut acc.zz, t.zz);
     f(&mut acc.xz, t.xz);
@@ -58,7 +58,8 @@ fn add<T: Real>(acc: &mut Triple<Estimate<T>>, t: Triple<Estimate<T>>, sign: f64
 fn zero_triple<T: Real>(like: &T) -> Triple<Estimate<T>> {
     let z = || Estimate {
         value: like.zero(),
-        err: 0.0,
+        error: 0.0,
+        kind: complexfn::ErrorKind::Propagated,
     };
     Triple {
         zz: z(),
@@ -79,7 +80,8 @@ impl<T: CachedRules> HalfPlane<T> {
         if *s >= 1.0 {
             return Ok(total.map(|e| Estimate {
                 value: e.value * half,
-                err: e.err * half,
+                error: e.error * half,
+                kind: complexfn::ErrorKind::Propagated,
             }));
         }
         let m0 = self.moment(0, s)?;
@@ -90,7 +92,8 @@ impl<T: CachedRules> HalfPlane<T> {
             let mag = p.to_f64().abs() + t.value.to_f64().abs() + a.value.to_f64().abs();
             Estimate {
                 value: (p + &t.value - &a.value) * half,
-                err: half * (sn.to_f64() * b.err + t.err + a.err + 4.0 * eps * mag),
+                error: half * (sn.to_f64() * b.error + t.error + a.error + 4.0 * eps * mag),
+                kind: complexfn::ErrorKind::Propagated,
             }
         };
         Ok(Triple {
@@ -125,7 +128,8 @@ impl<T: CachedRules> HalfPlane<T> {
         let odd = if x.is_sign_negative() { -1.0 } else { 1.0 };
         let sc = |e: Estimate<T>, sign: f64| Estimate {
             value: e.value * &scale * sign,
-            err: e.err * scale.to_f64(),
+            error: e.error * scale.to_f64(),
+            kind: complexfn::ErrorKind::Propagated,
         };
         Ok(Triple {
             zz: sc(prof.zz, odd),
@@ -160,7 +164,8 @@ impl<T: CachedRules> HalfPlane<T> {
         if *t <= 0.0 || *x == 0.0 {
             return Ok(Estimate {
                 value: t.zero(),
-                err: 0.0,
+                error: 0.0,
+                kind: complexfn::ErrorKind::Propagated,
             });
         }
         let s = x.clone().abs() / t;
@@ -172,14 +177,16 @@ impl<T: CachedRules> HalfPlane<T> {
             let spread = (hi.value.clone() - &lo.value).abs().to_f64();
             Estimate {
                 value: (lo.value + &hi.value) / 2.0,
-                err: lo.err.max(hi.err) + spread,
+                error: lo.error.max(hi.error) + spread,
+                kind: complexfn::ErrorKind::Propagated,
             }
         } else {
             self.xi_zz(&s)?
         };
         Ok(Estimate {
-            err: xi.err * scale.to_f64(),
+            error: xi.error * scale.to_f64(),
             value: xi.value * &scale,
+            kind: complexfn::ErrorKind::Propagated,
         })
     }
 
@@ -195,7 +202,8 @@ impl<T: CachedRules> HalfPlane<T> {
             let mag = a.to_f64().abs() + b.to_f64().abs();
             return Ok(Estimate {
                 value: a - b,
-                err: s.to_f64() * total0.err + total1.err / 2.0 + 4.0 * eps * mag,
+                error: s.to_f64() * total0.error + total1.error / 2.0 + 4.0 * eps * mag,
+                kind: complexfn::ErrorKind::Propagated,
             });
         }
         // behind the Rayleigh arrival g_zz is analytic: its Taylor series, free of the
@@ -219,16 +227,20 @@ impl<T: CachedRules> HalfPlane<T> {
         let mag = a.to_f64().abs()
             + sf * (total0.value.to_f64().abs() + m0.value.to_f64().abs())
             + 0.5 * (total1.value.to_f64().abs() + mm.value.to_f64().abs());
-        let err = 0.5 * sf * sf * m1.err
-            + sf * (total0.err + m0.err)
-            + 0.5 * (total1.err + mm.err)
+        let err = 0.5 * sf * sf * m1.error
+            + sf * (total0.error + m0.error)
+            + 0.5 * (total1.error + mm.error)
             + 4.0 * eps * mag
             + rounding;
         let value = a + b - c;
         if !value.is_finite() {
             return Err(self.at_rayleigh("the cell-mean primitive Xi(X, T)"));
         }
-        Ok(Estimate { value, err })
+        Ok(Estimate {
+            value,
+            error: err,
+            kind: complexfn::ErrorKind::Propagated,
+        })
     }
 
     /// xi(s) for 0 < s <= s_R/2 from the Taylor series of g_zz in u = s^2
@@ -268,10 +280,12 @@ impl<T: CachedRules> HalfPlane<T> {
         let log = (c1.value.clone() - g[0].clone() * s.clone().ln()) / 2.0;
         let inner = log.clone() + &poly;
         let uf = u.to_f64();
-        let err = uf * (c1.err / 2.0 + 8.0 * eps * (log.to_f64().abs() + mag) + series_tail(g, &u));
+        let err =
+            uf * (c1.error / 2.0 + 8.0 * eps * (log.to_f64().abs() + mag) + series_tail(g, &u));
         Ok(Estimate {
             value: inner * &u,
-            err,
+            error: err,
+            kind: complexfn::ErrorKind::Propagated,
         })
     }
 
@@ -314,8 +328,9 @@ impl<T: CachedRules> HalfPlane<T> {
             uk *= &u;
         }
         let c = Estimate {
-            err: w.err + 8.0 * eps * mag + series_tail(g, &u),
+            error: w.error + 8.0 * eps * mag + series_tail(g, &u),
             value: sum,
+            kind: complexfn::ErrorKind::Propagated,
         };
         Ok(self.moments.step_constant.get_or_init(|| c).clone())
     }
@@ -381,7 +396,8 @@ impl<T: CachedRules> HalfPlane<T> {
                 let dt = tb.clone() - ta;
                 let comb = |p: Estimate<T>, q: Estimate<T>| Estimate {
                     value: (lead.clone() * &p.value - &q.value) / &dt,
-                    err: (lead.to_f64().abs() * p.err + q.err) / dt.to_f64(),
+                    error: (lead.to_f64().abs() * p.error + q.error) / dt.to_f64(),
+                    kind: complexfn::ErrorKind::Propagated,
                 };
                 Ok(Triple {
                     zz: comb(phi.zz, psi.zz),

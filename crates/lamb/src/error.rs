@@ -6,16 +6,10 @@ use thiserror::Error;
 /// admissible range, so that callers (and the command line) can print one clear line.
 #[derive(Debug, Clone, Error, PartialEq)]
 pub enum LambError {
-    /// A parameter outside its admissible range, or not finite.
-    #[error("invalid {name} = {value}: admissible range is {range}")]
-    InvalidParameter {
-        /// Parameter name as the documentation spells it.
-        name: &'static str,
-        /// The offending value, printed with a few significant digits.
-        value: String,
-        /// The admissible range.
-        range: String,
-    },
+    /// A parameter outside its admissible range, or not finite (the shape shared by every
+    /// crate, [`complexfn::InvalidParameter`]).
+    #[error(transparent)]
+    InvalidParameter(#[from] complexfn::InvalidParameter),
     /// A pointwise value (or a cell end) exactly at the Rayleigh arrival s = s_R, where the
     /// direct terms have a pole and the cross terms a delta.
     #[error("{quantity} is singular at s = s_R = {s_r} (the Rayleigh arrival): give s != s_R, or a cell that contains s_R in its interior")]
@@ -47,11 +41,7 @@ pub(crate) fn invalid(
     value: impl std::fmt::Display,
     range: impl Into<String>,
 ) -> LambError {
-    LambError::InvalidParameter {
-        name,
-        value: value.to_string(),
-        range: range.into(),
-    }
+    complexfn::InvalidParameter::new(name, value, range).into()
 }
 
 /// A value with about seven significant digits, for messages (plain notation between 1e-4

@@ -59,14 +59,9 @@ impl<T> Triple<T> {
     }
 }
 
-/// A value with its estimated absolute error.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Estimate<T> {
-    /// The value.
-    pub value: T,
-    /// Estimated absolute error (never below the rounding of the evaluation).
-    pub err: f64,
-}
+/// A value with its estimated absolute error (never below the rounding of the evaluation):
+/// the workspace's one such type, [`complexfn::Estimate`].
+pub use complexfn::Estimate;
 
 /// The non-Rayleigh roots of the Rayleigh cubic.
 #[derive(Clone, Debug)]
@@ -315,7 +310,7 @@ impl<T: Real> HalfPlane<T> {
         s: &T,
         t: Triple<Estimate<T>>,
     ) -> Result<Triple<Estimate<T>>> {
-        let ok = |e: &Estimate<T>| e.value.is_finite() && e.err.is_finite();
+        let ok = |e: &Estimate<T>| e.value.is_finite() && e.error.is_finite();
         if ok(&t.zz) && ok(&t.xz) && ok(&t.xx) {
             Ok(t)
         } else {
@@ -404,7 +399,11 @@ impl<T: Real> HalfPlane<T> {
         let out = value.map(|v| {
             let err = (16.0 + cond) * eps * v.to_f64().abs() + 4.0 * eps * dev[i];
             i += 1;
-            Estimate { value: v, err }
+            Estimate {
+                value: v,
+                error: err,
+                kind: complexfn::ErrorKind::Rounding,
+            }
         });
         self.finite("the impulse response g(s)", s, out)
     }

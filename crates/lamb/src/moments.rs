@@ -476,7 +476,8 @@ impl<T: CachedRules> HalfPlane<T> {
         let (mut big, mut small) = (big, small);
         let mut best = Estimate {
             value: s.zero(),
-            err: f64::INFINITY,
+            error: f64::INFINITY,
+            kind: complexfn::ErrorKind::Rounding,
         };
         for _ in 0..6 {
             let (Some((a, mag)), Some((b, _))) = (sum(big), sum(small)) else {
@@ -484,8 +485,12 @@ impl<T: CachedRules> HalfPlane<T> {
             };
             let diff = (a.clone() - &b).abs().to_f64();
             let err = diff + 16.0 * eps * mag;
-            if err < best.err {
-                best = Estimate { value: a, err };
+            if err < best.error {
+                best = Estimate {
+                    value: a,
+                    error: err,
+                    kind: complexfn::ErrorKind::Rounding,
+                };
             }
             if diff <= 64.0 * eps * mag {
                 break;
@@ -643,7 +648,8 @@ impl<T: CachedRules> HalfPlane<T> {
         if *s >= 1.0 {
             return Ok(Estimate {
                 value: s.zero(),
-                err: 0.0,
+                error: 0.0,
+                kind: complexfn::ErrorKind::Rounding,
             });
         }
         let (tv, tw) = self.first_zz_terms();
@@ -653,13 +659,13 @@ impl<T: CachedRules> HalfPlane<T> {
         if let Some((_, gap, w)) = &heads.w {
             let b = tw.eval(w, None, Some(gap));
             out.value += &b.value;
-            out.err += b.err;
+            out.error += b.error;
         }
         // rounding of s_R moves the logarithm r s_R ln|s - s_R|
         if rounding_of_s_r {
             let eps = s.epsilon().to_f64();
             let c = self.rayleigh_constants();
-            out.err += self.pole_conditioning(s) * eps * c.r_zz.to_f64().abs() * c.s_r.to_f64();
+            out.error += self.pole_conditioning(s) * eps * c.r_zz.to_f64().abs() * c.s_r.to_f64();
         }
         if !out.value.is_finite() {
             return Err(invalid(
@@ -707,7 +713,11 @@ impl<T: CachedRules> HalfPlane<T> {
             ));
         }
         let zero = s.zero();
-        let est = |v: T| Estimate { value: v, err: 0.0 };
+        let est = |v: T| Estimate {
+            value: v,
+            error: 0.0,
+            kind: complexfn::ErrorKind::Rounding,
+        };
         if *s >= 1.0 {
             return Ok(Triple {
                 zz: est(zero.clone()),
@@ -766,9 +776,9 @@ impl<T: CachedRules> HalfPlane<T> {
                 )
             };
             zz.value += &a.value;
-            zz.err += a.err;
+            zz.error += a.error;
             xx.value += &b.value;
-            xx.err += b.err;
+            xx.error += b.error;
         }
         let mut xz = self.xz_moment(t, n, s);
         // rounding of s_R: the logarithm r s_R^-n ln|s - s_R| of the direct terms moves by
@@ -778,10 +788,10 @@ impl<T: CachedRules> HalfPlane<T> {
             let c = self.rayleigh_constants();
             let srn = c.s_r.to_f64().powi(-(n as i32));
             let cond = self.pole_conditioning(s);
-            zz.err += cond * eps * c.r_zz.to_f64().abs() * srn;
-            xx.err += cond * eps * c.r_xx.to_f64().abs() * srn;
+            zz.error += cond * eps * c.r_zz.to_f64().abs() * srn;
+            xx.error += cond * eps * c.r_xx.to_f64().abs() * srn;
             if cond > 0.25 / eps {
-                xz.err += std::f64::consts::PI * c.k_r.to_f64().abs() * c.s_r.to_f64() * srn;
+                xz.error += std::f64::consts::PI * c.k_r.to_f64().abs() * c.s_r.to_f64() * srn;
             }
         }
         self.finite("the moment M_n(s)", s, Triple { zz, xz, xx })
@@ -836,19 +846,21 @@ impl<T: CachedRules> HalfPlane<T> {
                     let pole = -(r_p.clone() * 2.0 / &root * ratio.atan());
                     let value = head.clone() - sin * sum + &pole;
                     Estimate {
-                        err: series.tail
+                        error: series.tail
                             + rounding
                             + 16.0 * eps * (head.to_f64().abs() + kk * mag + pole.to_f64().abs()),
                         value,
+                        kind: complexfn::ErrorKind::Rounding,
                     }
                 } else {
                     let pole = -(r_p.clone() * s.pi() / &root);
                     let value = series.coef[0].clone() / 2.0 * s.pi() + &pole;
                     Estimate {
-                        err: series.tail
+                        error: series.tail
                             + rounding
                             + 16.0 * eps * (value.to_f64().abs() + pole.to_f64().abs()),
                         value,
+                        kind: complexfn::ErrorKind::Rounding,
                     }
                 }
             }
@@ -856,7 +868,7 @@ impl<T: CachedRules> HalfPlane<T> {
         if *s < self.s_r {
             let c = self.rayleigh_constants();
             let delta = s.pi() * &c.k_r * c.s_r.clone().powi(1 - n as i32);
-            out.err += 16.0 * s.epsilon().to_f64() * delta.to_f64().abs();
+            out.error += 16.0 * s.epsilon().to_f64() * delta.to_f64().abs();
             out.value += &delta;
         }
         out
@@ -886,7 +898,8 @@ impl<T: CachedRules> HalfPlane<T> {
         let b = self.moment(n, sb)?;
         let diff = |p: Estimate<T>, q: Estimate<T>| Estimate {
             value: p.value - &q.value,
-            err: p.err + q.err,
+            error: p.error + q.error,
+            kind: complexfn::ErrorKind::Rounding,
         };
         Ok(Triple {
             zz: diff(a.zz, b.zz),

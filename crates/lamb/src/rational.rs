@@ -371,7 +371,8 @@ impl<T: Real> EvenRational<T> {
         }
         Estimate {
             value: sum,
-            err: 32.0 * eps * mag,
+            error: 32.0 * eps * mag,
+            kind: complexfn::ErrorKind::Rounding,
         }
     }
 
@@ -395,7 +396,8 @@ impl<T: Real> EvenRational<T> {
         }
         Estimate {
             value: sum,
-            err: 32.0 * eps * mag,
+            error: 32.0 * eps * mag,
+            kind: complexfn::ErrorKind::Rounding,
         }
     }
 
@@ -417,7 +419,8 @@ impl<T: Real> EvenRational<T> {
         }
         Estimate {
             value: sum,
-            err: 8.0 * eps * mag + 2.0 * last,
+            error: 8.0 * eps * mag + 2.0 * last,
+            kind: complexfn::ErrorKind::Rounding,
         }
     }
 }

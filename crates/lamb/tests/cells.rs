@@ -72,9 +72,9 @@ fn a_cell_in_one_smooth_region_equals_a_double_gauss_legendre_integral() {
                         want[k]
                     );
                     assert!(
-                        d <= e.err.max(1e-15 * scale),
+                        d <= e.error.max(1e-15 * scale),
                         "nu {nu} comp {k}: stated {:e} actual {d:e}",
-                        e.err
+                        e.error
                     );
                 }
             }

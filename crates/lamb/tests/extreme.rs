@@ -39,9 +39,9 @@ fn stated_errors_hold_for_extreme_materials() {
             for (x, y) in [(&a.zz, &b.zz), (&a.xz, &b.xz), (&a.xx, &b.xx)] {
                 let actual = (x.value - y.value.to_f64()).abs();
                 assert!(
-                    actual <= x.err.max(1e-300),
+                    actual <= x.error.max(1e-300),
                     "nu {nu} s {s} g: {actual:e} > {:e}",
-                    x.err
+                    x.error
                 );
             }
             for n in 0..3 {
@@ -50,13 +50,13 @@ fn stated_errors_hold_for_extreme_materials() {
                 for (x, y) in [(&a.zz, &b.zz), (&a.xz, &b.xz), (&a.xx, &b.xx)] {
                     let actual = (x.value - y.value.to_f64()).abs();
                     assert!(
-                        actual <= x.err.max(1e-300),
+                        actual <= x.error.max(1e-300),
                         "nu {nu} s {s} n {n}: actual {actual:e} > stated {:e} (value {})",
-                        x.err,
+                        x.error,
                         x.value
                     );
                     let scale = y.value.to_f64().abs().max(1e-300);
-                    stated_max = stated_max.max(x.err / scale.max(1e-3));
+                    stated_max = stated_max.max(x.error / scale.max(1e-3));
                 }
             }
         }

@@ -81,7 +81,7 @@ impl<T: CachedRules> Case<T> {
                     c / ray.r_over_xi_minus_root(&v)
                 })
                 .map_err(|e| from_quad("normal gap", e))?;
-                acc += e.value;
+                acc += e.estimate.value;
                 if self.solution() != Solution::AsPrinted {
                     acc -= (beta.clone() + &gamma) * (m_r.clone() - x) * &mt.pole / &m_r;
                 }
@@ -92,7 +92,7 @@ impl<T: CachedRules> Case<T> {
                     c / r
                 })
                 .map_err(|e| from_quad("normal gap", e))?;
-                acc += e.value;
+                acc += e.estimate.value;
             }
         }
         let lo = if *x > m { x.clone() } else { m.clone() };
@@ -112,7 +112,7 @@ impl<T: CachedRules> Case<T> {
             (v.clone() - x) * h / v.clone().sqr() * (yb + beta.clone() * tb)
         })
         .map_err(|e| from_quad("normal gap", e))?;
-        acc += e.value;
+        acc += e.estimate.value;
         Ok(-mt.v_hat.clone() + x - mt.q_hat.clone() * acc)
     }
 

@@ -6,26 +6,20 @@ use thiserror::Error;
 /// the admissible range, so that the command line can print them as one line.
 #[derive(Debug, Clone, Error, PartialEq)]
 pub enum WedgeError {
-    /// A parameter outside its admissible range, or not finite.
-    #[error("invalid {name} = {value}: admissible range is {range}")]
-    InvalidParameter {
-        /// Parameter name as the documentation and command line spell it.
-        name: &'static str,
-        /// The offending value.
-        value: String,
-        /// The admissible range.
-        range: String,
-    },
-    /// A quadrature, root solve or convergence check failed to reach its tolerance.
-    #[error("{what} did not converge: relative error {reached:e} (asked {asked:e})")]
-    NoConvergence {
-        /// What was being computed.
-        what: String,
-        /// Relative error reached.
-        reached: f64,
-        /// Relative error asked for.
-        asked: f64,
-    },
+    /// A parameter outside its admissible range, or not finite (the shape shared by every
+    /// crate, [`complexfn::InvalidParameter`]).
+    #[error(transparent)]
+    InvalidParameter(#[from] complexfn::InvalidParameter),
+    /// A quadrature, root solve or convergence check failed to reach its tolerance (the
+    /// shape shared by every crate, [`complexfn::NoConvergence`], its `reached` and `asked`
+    /// relative errors, which this crate's message names so).
+    #[error(
+        "{} did not converge: relative error {:e} (asked {:e})",
+        .0.what,
+        .0.reached,
+        .0.asked
+    )]
+    NoConvergence(complexfn::NoConvergence),
     /// A computed quantity is not finite at the working precision (an overflow, or a
     /// singularity its rule cannot integrate there): never reported as a value.
     #[error("{what} is not finite at this precision (an overflow or a singularity the rule cannot integrate)")]
@@ -84,20 +78,15 @@ pub(crate) fn invalid(
     value: impl std::fmt::Display,
     range: impl Into<String>,
 ) -> WedgeError {
-    WedgeError::InvalidParameter {
-        name,
-        value: value.to_string(),
-        range: range.into(),
-    }
+    complexfn::InvalidParameter::new(name, value, range).into()
 }
 
 pub(crate) fn from_quad(what: &str, e: complexfn::Error) -> WedgeError {
     match e {
-        complexfn::Error::NoConvergence { reached, asked, .. } => WedgeError::NoConvergence {
+        complexfn::Error::NoConvergence(e) => WedgeError::NoConvergence(complexfn::NoConvergence {
             what: what.to_string(),
-            reached,
-            asked,
-        },
+            ..e
+        }),
         other => WedgeError::Complex(other),
     }
 }

@@ -63,7 +63,7 @@ pub fn for_speed<S: Solver, T: CachedRules>(
         // the speeds at the bracket's ends, computed afresh (flo + target cancels for a
         // target far outside)
         let sig = |x: f64| format!("{x:.4e}");
-        return Err(WedgeError::InvalidParameter {
+        return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
             name: "speed",
             value: format!("{} m/s", sig(speed)),
             range: format!(
@@ -71,7 +71,7 @@ pub fn for_speed<S: Solver, T: CachedRules>(
                 sig(v64(lo)? * c),
                 sig(v64(hi)? * c)
             ),
-        });
+        }));
     }
     let p64 = illinois(lo, flo, hi, fhi, &1e-16, g64)?;
     if like.prec() <= 53 {
@@ -107,11 +107,11 @@ pub fn for_speed<S: Solver, T: CachedRules>(
         }
         w *= 100.0;
         if w > 0.1 {
-            return Err(WedgeError::NoConvergence {
+            return Err(WedgeError::NoConvergence(complexfn::NoConvergence {
                 what: "inverse solve for alpha".into(),
                 reached: w,
                 asked: like.epsilon().to_f64(),
-            });
+            }));
         }
     }
 }

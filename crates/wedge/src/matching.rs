@@ -150,8 +150,8 @@ impl<T: CachedRules> Case<T> {
         let l_mr = ray.at_boundary(&m_r, Side::Lower).l.re;
         let pole = p.pi() * l_mr * &h_mr / (m_r.clone() * ray.r_prime_at_root());
 
-        let [i1, i3, i5, i7] = ea.value;
-        let [i2, i4, i6, i8] = eb.value;
+        let [i1, i3, i5, i7] = ea.estimate.value;
+        let [i2, i4, i6, i8] = eb.estimate.value;
         let (i5, i7, i6, i8) = (i5 / &w, i7 / &w, i6 / &w, i8 / &w);
         let (i1, i3, i5, i7) = if self.solution == Solution::AsPrinted {
             (i1, i3, i5, i7)
@@ -178,7 +178,8 @@ impl<T: CachedRules> Case<T> {
         // the quadratures bound I1 ... I4 and w I5 ... w I8 to ea.error + eb.error each, so
         // each of the two sums of (53) to (1 + |beta|/w) times that; the inner rule's error
         // perturbs every integrand alike (relative to its terms' sizes)
-        let quad = (ea.error + eb.error) * (1.0 + self.beta.to_f64().abs() / w.to_f64());
+        let quad =
+            (ea.estimate.error + eb.estimate.error) * (1.0 + self.beta.to_f64().abs() / w.to_f64());
         let inner = self.inner.error().min(1.0) * (scale_d + scale_n);
         let abs_err = quad + inner;
         let rel_d = abs_err / denom.to_f64().abs().max(1e-300);
@@ -220,7 +221,7 @@ impl<T: CachedRules> Case<T> {
             } else {
                 format!("Theta well above {theta}")
             };
-            return WedgeError::InvalidParameter {
+            return WedgeError::InvalidParameter(complexfn::InvalidParameter {
                 name: "theta_deg",
                 value: theta.to_string(),
                 range: format!(
@@ -232,7 +233,7 @@ impl<T: CachedRules> Case<T> {
                     crate::error::short(self.p.to_f64() * self.material.c1().value()),
                     self.indenter.gamma().text(),
                 ),
-            };
+            });
         }
         WedgeError::Undetermined {
             what: "v_over_c1_cot_theta".into(),

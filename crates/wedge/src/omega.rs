@@ -521,11 +521,11 @@ impl<T: CachedRules> InnerRule<T> {
                 Err(d) => reached = d,
             }
         }
-        Err(WedgeError::NoConvergence {
+        Err(WedgeError::NoConvergence(complexfn::NoConvergence {
             what: "Gauss-Legendre rule for Lambda0".into(),
             reached,
             asked: eps,
-        })
+        }))
     }
 
     /// The doubling test from n nodes in t (`log_var`) or in u: the accepted rule, or the
@@ -947,6 +947,7 @@ mod tests {
                     |pt: &Point<Float>| f(&pt.v),
                 )
                 .unwrap()
+                .estimate
                 .value
             };
             let close = |got: Cx<Float>, exact: Cx<Float>, what: &str| {

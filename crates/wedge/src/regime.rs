@@ -199,6 +199,9 @@ impl<T: CachedRules> Case<T> {
         let q_abs = q.to_f64().abs();
         let error =
             q_abs * (4.0 * (lower.error + upper.error) + 16.0 * p.epsilon().to_f64() * size);
-        Ok((-(q * (lower.value + upper.value + lead)), error))
+        Ok((
+            -(q * (lower.estimate.value + upper.estimate.value + lead)),
+            error,
+        ))
     }
 }

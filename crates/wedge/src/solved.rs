@@ -117,7 +117,11 @@ pub trait ContactSolution<T: CachedRules>: Send + Sync {
 /// `value` with the relative error `rel` of the matching (absolute: rel |value|).
 fn with_rel<T: Real>(value: T, rel: f64) -> WithError<T> {
     let error = rel * value.to_f64().abs();
-    WithError { value, error }
+    WithError {
+        value,
+        error,
+        kind: complexfn::ErrorKind::Propagated,
+    }
 }
 
 /// The relative forward error that the rounding of p = alpha/c1 (and of m_R) to the working
@@ -275,6 +279,7 @@ impl<T: CachedRules> ContactSolution<T> for Case<T> {
         Ok(WithError {
             value: a.value,
             error,
+            kind: complexfn::ErrorKind::Propagated,
         })
     }
 }

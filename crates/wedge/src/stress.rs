@@ -27,14 +27,9 @@ use crate::case::Case;
 use crate::error::{from_quad, invalid, Result};
 use crate::matching::tol_for;
 
-/// A value with its estimated absolute error.
-#[derive(Clone, Debug)]
-pub struct WithError<T> {
-    /// The value.
-    pub value: T,
-    /// Estimated absolute error.
-    pub error: f64,
-}
+/// A value with its estimated absolute error: the workspace's one such type,
+/// [`complexfn::Estimate`], under the name this crate's interface has used.
+pub use complexfn::Estimate as WithError;
 
 impl<T: CachedRules> Case<T> {
     /// The integrand g(v) of (40) at v in (0, p), with p - v given exactly.
@@ -66,8 +61,8 @@ impl<T: CachedRules> Case<T> {
             |pt: &Point<T>| f(&pt.v, &pt.to_b),
         )
         .map_err(|e| from_quad("contact integral", e))?;
-        value += e.value;
-        error += e.error;
+        value += e.estimate.value;
+        error += e.estimate.error;
         if *x < quarter {
             let y0 = x.clone().ln();
             let y1 = quarter.ln();
@@ -77,10 +72,14 @@ impl<T: CachedRules> Case<T> {
                 f(&v, &pv) * v
             })
             .map_err(|e| from_quad("contact integral (apex part)", e))?;
-            value += e.value;
-            error += e.error;
+            value += e.estimate.value;
+            error += e.estimate.error;
         }
-        Ok(WithError { value, error })
+        Ok(WithError {
+            value,
+            error,
+            kind: complexfn::ErrorKind::Quadrature,
+        })
     }
 
     /// Contact stress sigma_theta(r, 0, t)/(mu cot Theta) at x = r/(c1 t) in (0, p], eq (40).
@@ -98,6 +97,7 @@ impl<T: CachedRules> Case<T> {
             return Ok(WithError {
                 value: x.zero(),
                 error: 0.0,
+                kind: complexfn::ErrorKind::Quadrature,
             });
         }
         let e = self.contact_integral(x, |v, pv| self.stress_integrand(v, pv))?;
@@ -105,7 +105,11 @@ impl<T: CachedRules> Case<T> {
         let q_abs = q.to_f64().abs();
         let value = -(q * e.value);
         let error = 4.0 * e.error * q_abs + rel * value.to_f64().abs();
-        Ok(WithError { value, error })
+        Ok(WithError {
+            value,
+            error,
+            kind: complexfn::ErrorKind::Quadrature,
+        })
     }
 
     /// The integrand of J(x) (tangential slip rate on the contact) at v in (0, p). R/v^2 is
@@ -157,8 +161,9 @@ impl<T: CachedRules> Case<T> {
         let e1 = self.omega_fn().one_minus_two_omega0();
         let lead = c * quarter.powf(&e1) / e1;
         Ok(WithError {
-            value: lower.value + upper.value + lead,
-            error: lower.error + upper.error,
+            value: lower.estimate.value + upper.estimate.value + lead,
+            error: lower.estimate.error + upper.estimate.error,
+            kind: complexfn::ErrorKind::Quadrature,
         })
     }
 
@@ -190,7 +195,11 @@ impl<T: CachedRules> Case<T> {
         let error = 4.0 * j.error * (q / vh).to_f64().abs()
             + mt.rel_error * 2.0 * value.to_f64().abs()
             + cancel;
-        Ok(WithError { value, error })
+        Ok(WithError {
+            value,
+            error,
+            kind: complexfn::ErrorKind::Quadrature,
+        })
     }
 
     /// u_r(0+, t)/(V t): the tangential displacement at the apex. Non-zero means the

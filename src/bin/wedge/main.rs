@@ -213,11 +213,11 @@ fn input(case: &CaseArgs, digits: Option<u32>, defaults: Defaults) -> Result<Cas
     };
     if let Some(d) = digits {
         if d == 0 || d > 2000 {
-            return Err(WedgeError::InvalidParameter {
+            return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
                 name: "digits",
                 value: d.to_string(),
                 range: "1 ..= 2000".into(),
-            });
+            }));
         }
     }
     let solution = match (&case.solution, defaults) {
@@ -372,11 +372,11 @@ fn run(cli: Cli) -> Result<()> {
                 inp.precision()?.bits()
             };
             if n > CURVE_CAP && !force {
-                return Err(WedgeError::InvalidParameter {
+                return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
                     name: "alpha-range steps",
                     value: n.to_string(),
                     range: format!("1 ..= {CURVE_CAP} (or add --force)"),
-                });
+                }));
             }
             let alphas = linspace(&lo, &hi, n, bits);
             let bar = ProgressBar::new(n as u64);

@@ -80,7 +80,7 @@ pub fn raw_rayleigh<T: Real>(m: &T, s: &T) -> T {
 /// relative to max(|integral|, b - a) (f + 1 is integrated, for integrals that vanish).
 pub fn quad<T: CachedRules>(a: &T, b: &T, tol: f64, f: impl Fn(&T) -> T) -> T {
     match tanh_sinh(a, b, TsOptions::new(tol), |p| f(&p.v) + 1.0) {
-        Ok(e) => e.value - (b.clone() - a),
+        Ok(e) => e.estimate.value - (b.clone() - a),
         Err(e) => panic!("quadrature on [{a}, {b}]: {e}"),
     }
 }

@@ -94,7 +94,7 @@ pub fn impact_accuracy(ctx: &Ctx) -> Result<Summary> {
                 };
                 let v = pick(r);
                 actual = actual.max((v.value - pick(t).value).abs());
-                if let Some(e) = v.err {
+                if let Some(e) = v.error {
                     stated = stated.max(e);
                 }
             }

@@ -8,7 +8,7 @@
 
 use std::path::PathBuf;
 
-use impact::{EdgeLaw, HistoryRow, ImpactCase, Solution, REFERENCE};
+use impact::{EdgeLaw, HistoryRow, ImpactCase, SolvedImpact, REFERENCE};
 
 use super::field_snapshot::{colormap, VIRIDIS};
 use super::output::{Cell as CsvCell, Column, Table};
@@ -22,7 +22,7 @@ const V0: f64 = REFERENCE.v0_over_c1;
 const END: f64 = REFERENCE.end;
 
 /// The reference case with `law` on the grid of the figure's mode.
-fn solve(ctx: &Ctx, law: EdgeLaw) -> Result<Solution> {
+fn solve(ctx: &Ctx, law: EdgeLaw) -> Result<SolvedImpact> {
     let mut case = ImpactCase::reference(law);
     case.dx = if ctx.quick { 0.02 } else { 0.005 };
     case.levels = 3;
@@ -30,7 +30,7 @@ fn solve(ctx: &Ctx, law: EdgeLaw) -> Result<Solution> {
         .map_err(|e| FigError(format!("impact, {} law: {e}", law.name())))
 }
 
-fn case_param(table: &mut Table, sol: &Solution) {
+fn case_param(table: &mut Table, sol: &SolvedImpact) {
     table.param(format!(
         "material: c1 = {C1} m/s, c2 = {C2} m/s (the half-plane)"
     ));
@@ -80,7 +80,7 @@ pub fn impact_history(ctx: &Ctx) -> Result<Summary> {
         ],
     );
     case_param(&mut table, &runs[0].1);
-    let err = |v: &impact::Value| v.err.map(CsvCell::Num).unwrap_or(CsvCell::Empty);
+    let err = |v: &impact::Value| v.error.map(CsvCell::Num).unwrap_or(CsvCell::Empty);
     for (law, _, rows) in &runs {
         for r in rows {
             table.push(vec![
@@ -186,7 +186,7 @@ pub fn impact_history(ctx: &Ctx) -> Result<Summary> {
 }
 
 /// (c1 t/R, b/R) at every step of the finest grid.
-fn sol_steps(sol: &Solution) -> Vec<(f64, f64)> {
+fn sol_steps(sol: &SolvedImpact) -> Vec<(f64, f64)> {
     sol.runs[0].steps.iter().map(|s| (s.t, s.b)).collect()
 }
 

@@ -106,7 +106,7 @@ pub fn impact_strikers(ctx: &Ctx) -> Result<Summary> {
     ));
     let mass = shell().mass_ratio();
     let ke0 = 0.5 * mass * V0 * V0;
-    let err = |v: &impact::Value| v.err.map(Cell::Num).unwrap_or(Cell::Empty);
+    let err = |v: &impact::Value| v.error.map(Cell::Num).unwrap_or(Cell::Empty);
     for (name, rows) in &runs {
         for r in rows {
             let share = r.striker_energy.map(|e| e.value / ke0).unwrap_or(0.0);

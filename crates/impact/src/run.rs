@@ -1,0 +1,295 @@
+//! One grid's march history ([`Run`]) and its smoothed reads: the edge and the force at a
+//! step, averaged over the sawtooth of the cell crossings (`docs/impact.md`, section 4).
+
+use crate::march::StepState;
+use crate::scalar::Scalar;
+
+/// One grid's history, at the precision T.
+#[derive(Clone, Debug)]
+pub struct Run<T = f64> {
+    /// Cell width (units R).
+    pub dx: T,
+    /// Time step (units R/c1).
+    pub dt: T,
+    /// The steps.
+    pub steps: Vec<StepState<T>>,
+    /// The times the contact ended, in order (the end of the last step in contact).
+    pub separations: Vec<T>,
+    /// The times contact began again after a separation.
+    pub reimpacts: Vec<T>,
+    /// A bound of the error of the normalised influence coefficients used (quadrature of the
+    /// half-plane's and an elastic striker's tables, truncation of a shell's modal sums).
+    pub coefficient_error: f64,
+}
+
+/// The reported edge's smoothing window, in cell crossings (`Run::edge_at`).
+pub const EDGE_CROSSINGS: f64 = 3.0;
+
+/// The largest window of the reported edge's smoothing, in steps (`Run::edge_at`).
+pub const EDGE_WINDOW_STEPS: usize = 40;
+
+/// The largest window of the reported force's smoothing, in steps (`Run::force_at`): one
+/// crossing takes 1/(kappa |db/dt|) steps on every grid (37 near the reference case's peak
+/// force), and three of them are needed to average the force's sawtooth out
+/// (`docs/impact.md`, section 4).
+pub const FORCE_WINDOW_STEPS: usize = 120;
+
+impl<T: Scalar> Run<T> {
+    /// Step n (time t_n = n dt, n >= 1), if the march reached it.
+    pub fn step(&self, n: usize) -> Option<&StepState<T>> {
+        n.checked_sub(1).and_then(|i| self.steps.get(i))
+    }
+
+    /// The contact half-width at t_n (`docs/impact.md`, section 4, the edge's report): the
+    /// edge of step n where it stands for t_n (geometric); otherwise the value at t_n of the
+    /// least-squares quadratic through the steps' edges (at the times they stand for) over a
+    /// window of [`EDGE_CROSSINGS`] cell crossings centred on t_n (at most
+    /// [`EDGE_WINDOW_STEPS`] steps, narrowed to stay symmetric within the steps whose edges
+    /// the pressures set), which averages out the edge's phase error within its cell; where
+    /// the window holds fewer than five edges, the edges of the two steps around t_n
+    /// interpolated.
+    pub fn edge_at(&self, n: usize) -> Option<T> {
+        let s = self.step(n)?;
+        if s.edge_time == s.t {
+            return Some(s.b);
+        }
+        let mid = |x: &StepState<T>| x.edge_time != x.t && x.b > 0.0;
+        self.crossing_fit(n, EDGE_WINDOW_STEPS, mid, |x| (x.edge_time, x.b))
+            .or_else(|| self.edge_interpolated(n))
+    }
+
+    /// The value at t_n of the least-squares quadratic through `value` (time, value) of the
+    /// steps in a window of [`EDGE_CROSSINGS`] cell crossings of the edge centred on step n,
+    /// at most `cap` steps and narrowed to stay symmetric within the block of steps around n
+    /// that satisfy `eligible` (n among them); `None` where the window holds fewer than five
+    /// steps (`docs/impact.md`, section 4: the edge's phase within its cell leaves a sawtooth
+    /// of one crossing's period in the per-step values, which the fit averages out).
+    fn crossing_fit(
+        &self,
+        n: usize,
+        cap: usize,
+        eligible: impl Fn(&StepState<T>) -> bool,
+        value: impl Fn(&StepState<T>) -> (T, T),
+    ) -> Option<T> {
+        let s = self.step(n)?;
+        let ok = |m: usize| self.step(m).is_some_and(&eligible);
+        if !ok(n) {
+            return None;
+        }
+        // the block of eligible steps around n
+        let (mut first, mut last) = (n, n);
+        while first > 1 && ok(first - 1) && n - first < cap {
+            first -= 1;
+        }
+        while ok(last + 1) && last - n < cap {
+            last += 1;
+        }
+        // the window (a choice of steps, taken in f64)
+        let (dx, dt) = (self.dx.to_f64(), self.dt.to_f64());
+        let b = |m: usize| self.step(m).map_or(0.0, |x| x.b.to_f64());
+        let k = (n - first).min(last - n).min(5);
+        let speed = if k > 0 {
+            ((b(n + k) - b(n - k)) / (2.0 * k as f64 * dt)).abs()
+        } else {
+            0.0
+        };
+        let steps = (EDGE_CROSSINGS * dx / (speed * dt)).min(cap as f64);
+        let half = ((0.5 * steps) as usize).min(n - first).min(last - n);
+        if half < 2 {
+            return None;
+        }
+        // normal equations of a + c1 x + c2 x^2, x = (time - t_n)/width
+        let width = self.dt * (half as f64 + 0.5);
+        let zero = T::of(0.0);
+        let (mut m, mut r) = (vec![zero; 9], [zero; 3]);
+        for j in n - half..=n + half {
+            let (time, v) = value(self.step(j)?);
+            let x = (time - s.t) / width;
+            let phi = [T::of(1.0), x, x * x];
+            for i in 0..3 {
+                for (mij, &pj) in m[3 * i..3 * i + 3].iter_mut().zip(&phi) {
+                    *mij += phi[i] * pj;
+                }
+                r[i] += phi[i] * v;
+            }
+        }
+        complexfn::linalg::Lu::new(m, 3)
+            .and_then(|lu| lu.solve(&r))
+            .map(|c| c[0])
+    }
+
+    /// The edge at t_n interpolated between the edges of the steps around it by the times
+    /// they stand for (`StepState::edge_time`; the last step's extrapolated from the two
+    /// before).
+    pub fn edge_interpolated(&self, n: usize) -> Option<T> {
+        let s = self.step(n)?;
+        let (a, b) = match (
+            self.step(n + 1),
+            n.checked_sub(1).and_then(|m| self.step(m)),
+        ) {
+            (Some(next), _) => (s, next),
+            (None, Some(before)) => (before, s),
+            (None, None) => return Some(s.b),
+        };
+        let span = b.edge_time - a.edge_time;
+        if !(span > 0.0) {
+            return Some(s.b);
+        }
+        Some(a.b + (b.b - a.b) * (s.t - a.edge_time) / span)
+    }
+
+    /// The force at t_n (`docs/impact.md`, sections 3 and 4): a step's force stands for the
+    /// middle of the step, and it carries the sawtooth of the edge's cell crossings (large
+    /// under the kinematic law, whose edge cell has no condition of its own), so the value at
+    /// t_n of the least-squares quadratic through the steps' forces over a window of
+    /// [`EDGE_CROSSINGS`] cell crossings (at most [`FORCE_WINDOW_STEPS`] steps, symmetric
+    /// within the steps in contact); where that window holds fewer than five steps,
+    /// [`Run::force_interpolated`].
+    pub fn force_at(&self, n: usize) -> Option<T> {
+        let dt = self.dt;
+        self.crossing_fit(
+            n,
+            FORCE_WINDOW_STEPS,
+            |x| !x.pressure.is_empty(),
+            |x| (x.t - dt * 0.5, x.force),
+        )
+        .or_else(|| self.force_interpolated(n))
+    }
+
+    /// The force at t_n from the two steps around it (their forces stand for the middles of
+    /// the steps): their mean, the last step's extrapolated from the two before it.
+    pub fn force_interpolated(&self, n: usize) -> Option<T> {
+        let f = |n: usize| self.step(n).map(|s| s.force);
+        match (f(n), f(n + 1)) {
+            (Some(a), Some(b)) => Some((a + b) * 0.5),
+            (Some(a), None) if n >= 2 => f(n - 1).map(|z| a * 1.5 - z * 0.5),
+            (a, _) => a,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A run whose edges follow a smooth b(t) plus a sawtooth of one cell crossing's period
+    /// and zero mean (the phase error of the edge cell), at the middle of each step.
+    fn sawtooth_run(amplitude: f64) -> (Run, impl Fn(f64) -> f64) {
+        let (dx, dt) = (0.01, 0.02);
+        let truth = |t: f64| 0.05 + 0.05 * t - 0.002 * t * t;
+        let steps = (1..=400)
+            .map(|n| {
+                let t = n as f64 * dt;
+                let tau = t - 0.5 * dt;
+                let phase = (truth(tau) / dx).fract();
+                StepState {
+                    t,
+                    h: 0.0,
+                    v: 0.0,
+                    k: 0,
+                    b: truth(tau) + amplitude * dx * (phase - 0.5),
+                    edge_time: tau,
+                    force: 0.0,
+                    pressure: Vec::new(),
+                    w: Vec::new(),
+                    ws: Vec::new(),
+                    work: 0.0,
+                    striker_work: 0.0,
+                }
+            })
+            .collect();
+        let run = Run {
+            dx,
+            dt,
+            steps,
+            separations: Vec::new(),
+            reimpacts: Vec::new(),
+            coefficient_error: 0.0,
+        };
+        (run, truth)
+    }
+
+    #[test]
+    fn the_reported_edge_averages_out_the_phase_sawtooth() {
+        let (run, truth) = sawtooth_run(0.02);
+        let (mut smooth, mut raw) = (0.0f64, 0.0f64);
+        // away from the run's ends, where the window is whole
+        for n in 60..=340 {
+            let t = n as f64 * run.dt;
+            smooth = smooth.max((run.edge_at(n).unwrap() - truth(t)).abs() / run.dx);
+            raw = raw.max((run.edge_interpolated(n).unwrap() - truth(t)).abs() / run.dx);
+        }
+        // the sawtooth's amplitude is 0.01 cells
+        assert!(raw > 0.008, "raw edge error {raw} cells");
+        assert!(
+            smooth < 0.002,
+            "smoothed edge error {smooth} cells (raw {raw})"
+        );
+        // a smooth quadratic history is reproduced to rounding, up to two steps from the
+        // run's ends (where the edges are interpolated)
+        let (run, truth) = sawtooth_run(0.0);
+        for n in 3..=398 {
+            let t = n as f64 * run.dt;
+            let e = (run.edge_at(n).unwrap() - truth(t)).abs();
+            assert!(e < 1e-12, "step {n}: {e}");
+        }
+        for n in [1, 2, 399, 400] {
+            let t = n as f64 * run.dt;
+            let e = (run.edge_at(n).unwrap() - truth(t)).abs();
+            assert!(e < 1e-3 * run.dx, "step {n}: {e}");
+        }
+    }
+
+    /// The force of a smooth history plus the sawtooth of the edge's crossings (a drop at
+    /// each cell's entry, then a rise through the crossing, zero mean), as under the
+    /// kinematic law: the report removes the sawtooth and reproduces a quadratic history.
+    #[test]
+    fn the_reported_force_averages_out_the_crossing_sawtooth() {
+        let force = |t: f64| 1.0 + 0.3 * t - 0.02 * t * t;
+        let with_sawtooth = |amplitude: f64| {
+            let (mut run, _) = sawtooth_run(0.0);
+            let dx = run.dx;
+            for s in run.steps.iter_mut() {
+                let tau = s.t - 0.5 * run.dt;
+                let phase = (s.b / dx).fract();
+                s.force = force(tau) + amplitude * (phase - 0.5);
+                s.pressure = vec![s.force];
+            }
+            run
+        };
+        let run = with_sawtooth(0.03);
+        let (mut smooth, mut raw) = (0.0f64, 0.0f64);
+        for n in 100..=300 {
+            let t = n as f64 * run.dt;
+            smooth = smooth.max((run.force_at(n).unwrap() - force(t)).abs());
+            raw = raw.max((run.force_interpolated(n).unwrap() - force(t)).abs());
+        }
+        // the sawtooth's amplitude is 0.015
+        assert!(raw > 0.012, "raw force error {raw}");
+        assert!(smooth < 0.003, "smoothed force error {smooth} (raw {raw})");
+        let run = with_sawtooth(0.0);
+        for n in 3..=398 {
+            let t = n as f64 * run.dt;
+            let e = (run.force_at(n).unwrap() - force(t)).abs();
+            assert!(e < 1e-12, "step {n}: {e}");
+        }
+        // a step out of contact (205, given a wild force here) bounds the windows: it
+        // enters no fit on either side
+        let mut run = with_sawtooth(0.0);
+        run.steps[204].pressure.clear();
+        run.steps[204].force = 1e3;
+        for n in [200, 210] {
+            let t = n as f64 * run.dt;
+            let e = (run.force_at(n).unwrap() - force(t)).abs();
+            assert!(e < 1e-9, "step {n}: {e}");
+        }
+    }
+
+    #[test]
+    fn a_geometric_edge_is_reported_as_it_is() {
+        let (mut run, _) = sawtooth_run(0.02);
+        let s = &mut run.steps[199];
+        s.edge_time = s.t;
+        assert_eq!(run.edge_at(200), Some(run.steps[199].b));
+    }
+}

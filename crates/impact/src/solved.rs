@@ -1,0 +1,673 @@
+//! A solved impact case and what it reports: the history of the finest grid with error
+//! estimates from grid refinement (`docs/impact.md`, section 5), the rebound, the pressure
+//! profiles and the striker's energies.
+
+use complexfn::{ErrorKind, Real};
+
+use crate::case::{Drive, ImpactCase};
+use crate::error::{ImpactError, Result};
+use crate::march::EdgeLaw;
+use crate::run::Run;
+use crate::scalar::Scalar;
+use crate::striker::{shell_energies, Ring, Striker};
+
+/// The safety factor on the grids' differences in every error estimate of a history and a
+/// pressure profile (`docs/impact.md`, section 5): the contact set moves cell by cell, so the
+/// error is not smooth in dx.
+const ESTIMATE_SAFETY: f64 = 4.0;
+
+/// A pressure profile of the finest grid ([`SolvedImpact::pressure_profile`]).
+#[derive(Clone, Debug)]
+pub struct PressureProfile<T = f64> {
+    /// c1 t/R (the middle of the step).
+    pub t: T,
+    /// The cell centres x/R.
+    pub x: Vec<T>,
+    /// The cells' mean pressures p/(rho c1^2).
+    pub p: Vec<T>,
+    /// Their error estimates (`None` with a single grid).
+    pub err: Option<Vec<f64>>,
+}
+
+/// The mean pressures over the cells of a grid `ratio` times coarser (`ratio` even; the
+/// coarse cell k spans [(k ratio - ratio/2) dx, (k ratio + ratio/2) dx], so the fine cells at
+/// its two ends count half), from the fine cells' means `p` (cell j spanning
+/// [(j - 1/2) dx, (j + 1/2) dx], cell 0 centred on the axis, the profile even).
+pub fn coarse_means<T: Scalar>(p: &[T], ratio: usize) -> Vec<T> {
+    let half = ratio / 2;
+    let zero = T::of(0.0);
+    // the even extension p_-j = p_j, and nothing beyond the given cells
+    let at = |j: i64| p.get(j.unsigned_abs() as usize).copied().unwrap_or(zero);
+    let n = p.len().div_ceil(half) / 2 + 1;
+    (0..n)
+        .map(|k| {
+            let c = (k * ratio) as i64;
+            let h = half as i64;
+            let inner = (c - h + 1..c + h).map(at).fold(zero, |a, v| a + v);
+            (inner + (at(c - h) + at(c + h)) * 0.5) / ratio as f64
+        })
+        .collect()
+}
+
+/// The edge's speed range.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// |db/dt| > c1.
+    Supersonic,
+    /// c2 < |db/dt| < c1.
+    Transonic,
+    /// c_R < |db/dt| < c2.
+    RayleighShear,
+    /// |db/dt| < c_R.
+    SubRayleigh,
+}
+
+impl Stage {
+    /// `supersonic`, `transonic`, `rayleigh-shear` or `sub-rayleigh`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Supersonic => "supersonic",
+            Stage::Transonic => "transonic",
+            Stage::RayleighShear => "rayleigh-shear",
+            Stage::SubRayleigh => "sub-rayleigh",
+        }
+    }
+}
+
+/// The finest grid's value with its absolute error estimate from refinement (kind
+/// [`ErrorKind::Refinement`]): the workspace's one value-with-error type,
+/// [`complexfn::Estimate`], whose error is here an `Option`, `None` with a single grid level
+/// (nothing to refine against), never a zero that would read as exact.
+pub type Value<T = f64> = complexfn::Estimate<T, Option<f64>>;
+
+/// One row of the reported history (dimensionless).
+#[derive(Clone, Debug)]
+pub struct HistoryRow<T = f64> {
+    /// c1 t/R.
+    pub t: T,
+    /// h/R.
+    pub h: Value<T>,
+    /// (dh/dt)/c1.
+    pub hdot: Value<T>,
+    /// b/R.
+    pub b: Value<T>,
+    /// (db/dt)/c1 (central difference of b over the reporting interval).
+    pub bdot: T,
+    /// The edge's speed range.
+    pub stage: Stage,
+    /// R(t)/(rho c1^2 R).
+    pub force: Value<T>,
+    /// Striker kinetic energy over rho c1^2 R^2 (free striker).
+    pub kinetic: Option<Value<T>>,
+    /// Work done on the half-plane over rho c1^2 R^2, through the kernels.
+    pub work: Value<T>,
+    /// The striker's surface displacement towards its interior at the contact point (mean over
+    /// the central cell) over R; `None` for a rigid striker.
+    pub striker_deformation: Option<Value<T>>,
+    /// Energy taken up by the striker's deformation (its strain and vibration kinetic
+    /// energy: the work of the contact pressure on its surface) over rho c1^2 R^2; `None`
+    /// for a rigid striker.
+    pub striker_energy: Option<Value<T>>,
+    /// (kinetic + work on the half-plane + the striker's energy - impact energy)/impact
+    /// energy (free striker; `docs/impact.md`, section 9).
+    pub energy_defect: Option<Value<T>>,
+}
+
+/// The rebound of a free striker, after its last separation ([`SolvedImpact::rebound`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Rebound<T = f64> {
+    /// c1 t/R at which the contact last ended (the end of the last step in contact).
+    pub separation: Value<T>,
+    /// The coefficient of restitution -V_final/V0, V_final the striker's speed after the
+    /// separation (constant in free flight).
+    pub restitution: Value<T>,
+    /// The work done on the half-plane over the impact energy (1/2) m0 V0^2: the share of
+    /// the impact energy carried off by the half-plane's waves (in plane strain no static
+    /// field remains).
+    pub energy_to_half_plane: Value<T>,
+    /// The number of re-impacts (contacts begun after a separation) before the last
+    /// separation.
+    pub reimpacts: usize,
+}
+
+/// The observed convergence order of each quantity.
+#[derive(Clone, Debug)]
+pub struct Orders {
+    /// Order of h.
+    pub h: Option<f64>,
+    /// Order of b.
+    pub b: Option<f64>,
+    /// Order of the force.
+    pub force: Option<f64>,
+}
+
+/// A solved case, at the precision T.
+#[derive(Clone, Debug)]
+pub struct SolvedImpact<T = f64> {
+    /// The inputs.
+    pub case: ImpactCase,
+    /// c2/c1.
+    pub m: T,
+    /// c_R/c1.
+    pub s_r: T,
+    pub(crate) mass: Option<T>,
+    /// The runs, finest first.
+    pub runs: Vec<Run<T>>,
+}
+
+fn order(fine: &[f64], mid: &[f64], coarse: &[f64]) -> Option<f64> {
+    let d1: f64 = fine.iter().zip(mid).map(|(a, b)| (a - b).abs()).sum();
+    let d2: f64 = mid.iter().zip(coarse).map(|(a, b)| (a - b).abs()).sum();
+    (d1 > 0.0 && d2 > 0.0).then(|| (d2 / d1).log2())
+}
+
+impl<T: Scalar> SolvedImpact<T> {
+    /// The reporting interval: the coarsest level's time step (its times are steps of every
+    /// level).
+    pub fn report_dt(&self) -> T {
+        self.runs.last().map(|r| r.dt).unwrap_or(T::of(0.0))
+    }
+
+    /// The estimate of a quantity known on every level (finest first) as one number per
+    /// level: the difference of the two finest levels (or half that of the next pair, if
+    /// larger), extrapolated with the observed order where three levels show one above 1/2,
+    /// times the safety factor of the histories; `None` with one level.
+    fn level_estimate(values: &[f64]) -> Option<f64> {
+        if values.len() < 2 || values.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+        let d1 = (values[0] - values[1]).abs();
+        let d2 = values.get(2).map(|c| (values[1] - c).abs());
+        let factor = match d2 {
+            Some(d2) if d1 > 0.0 && d2 > 0.0 => {
+                let p = (d2 / d1).log2();
+                if p > 0.5 {
+                    (1.0 / (2f64.powf(p) - 1.0)).max(1.0)
+                } else {
+                    2.0
+                }
+            }
+            _ => 1.0,
+        };
+        Some(ESTIMATE_SAFETY * d1.max(0.5 * d2.unwrap_or(0.0)) * factor)
+    }
+
+    /// Separation time c1 t/R of the finest grid (the last time the contact ended, the
+    /// striker off the surface at the run's end), with its estimate from the levels'
+    /// separations (never below the finest step); `None` when the finest grid's striker is
+    /// in contact at the end or never separated.
+    pub fn separation(&self) -> Option<Value<T>> {
+        self.rebound().ok().map(|r| r.separation)
+    }
+
+    /// The rebound of a free striker ([`Rebound`]), or the reason it is unavailable: a
+    /// driven striker, or one still in contact at the end of the run on one of the levels.
+    pub fn rebound(&self) -> std::result::Result<Rebound<T>, String> {
+        let Drive::Free { v0_over_c1, .. } = self.case.drive else {
+            return Err("a driven striker has no rebound".into());
+        };
+        let fine = &self.runs[0];
+        let free_at_end = |r: &Run<T>| {
+            !r.separations.is_empty() && r.steps.last().is_some_and(|s| s.pressure.is_empty())
+        };
+        if !free_at_end(fine) {
+            let t = fine.steps.last().map(|s| s.t.to_f64()).unwrap_or(0.0);
+            return Err(format!(
+                "the striker is in contact at the end of the run (c1 t/R = {t:.4}): run longer, or to --end separation"
+            ));
+        }
+        let mass = self.mass.ok_or("no mass")?;
+        let v0 = T::input(v0_over_c1);
+        let e0 = mass * v0 * v0 * 0.5;
+        let per_level = |r: &Run<T>| -> Option<(T, T, T)> {
+            if !free_at_end(r) {
+                return None;
+            }
+            let last = r.steps.last()?;
+            Some((*r.separations.last()?, -last.v / v0, last.work / e0))
+        };
+        let levels: Vec<(T, T, T)> = self.runs.iter().map_while(per_level).collect();
+        let (sep, res, work) = levels[0];
+        let pick =
+            |q: usize| -> Vec<f64> { levels.iter().map(|l| [l.0, l.1, l.2][q].to_f64()).collect() };
+        let coarser_in_contact = levels.len() < self.runs.len().min(2);
+        let est = |q: usize| -> Option<f64> {
+            if coarser_in_contact {
+                return None;
+            }
+            Self::level_estimate(&pick(q))
+        };
+        Ok(Rebound {
+            separation: Value {
+                value: sep,
+                error: est(0).map(|e| e.max(fine.dt.to_f64())),
+                kind: ErrorKind::Refinement,
+            },
+            restitution: Value {
+                value: res,
+                error: est(1),
+                kind: ErrorKind::Refinement,
+            },
+            energy_to_half_plane: Value {
+                value: work,
+                error: est(2),
+                kind: ErrorKind::Refinement,
+            },
+            reimpacts: fine.reimpacts.len(),
+        })
+    }
+
+    fn kinetic(&self, v: T) -> Option<T> {
+        // (1/2) m0 v^2 in units mu R^2 -> over rho c1^2 R^2 = (1/m^2)
+        self.mass.map(|mass| mass * v * v * self.m * self.m * 0.5)
+    }
+
+    /// The reported history with error estimates, and the observed orders.
+    pub fn history(&self) -> (Vec<HistoryRow<T>>, Orders) {
+        let m2 = self.m * self.m;
+        let dtr = self.report_dt();
+        let fine = &self.runs[0];
+        let zero = T::of(0.0);
+        let last_t = fine.steps.last().map(|s| s.t).unwrap_or(zero);
+        let nrep = ((last_t / dtr).to_f64() + 1e-9).floor() as usize;
+        // the levels share their time levels: report time i is step i dtr/dt of each level,
+        // at the time the finest level gives it (the end exactly at the last)
+        let per = |r: &Run<T>| (dtr / r.dt).to_f64().round().max(1.0) as usize;
+        let times: Vec<T> = (1..=nrep)
+            .map(|i| fine.step(i * per(fine)).map_or(dtr * i as f64, |s| s.t))
+            .collect();
+        // the step of a run at a report time
+        let step_at = |r: &Run<T>, i: usize| (i + 1) * per(r);
+        // each quantity at step n (time t_n)
+        type Getter<'g, T> = Box<dyn Fn(&Run<T>, usize) -> Option<T> + 'g>;
+        // the energy defect (kinetic + work + striker's - impact energy)/impact energy of a
+        // free striker (`docs/impact.md`, section 9)
+        let energy = match (self.mass, &self.case.drive) {
+            (Some(mass), Drive::Free { v0_over_c1, .. }) => {
+                let v0 = T::input(*v0_over_c1);
+                Some((mass, mass * v0 * v0 * 0.5))
+            }
+            _ => None,
+        };
+        let getters: [Getter<'_, T>; 7] = [
+            Box::new(|r, n| r.step(n).map(|s| s.h)),
+            Box::new(|r, n| r.step(n).map(|s| s.v)),
+            Box::new(|r, n| r.edge_at(n)),
+            Box::new(|r, n| r.force_at(n)),
+            Box::new(|r, n| {
+                r.step(n)
+                    .map(|s| s.ws.first().copied().unwrap_or(T::of(0.0)))
+            }),
+            Box::new(|r, n| r.step(n).map(|s| s.striker_work)),
+            Box::new(move |r, n| {
+                let (mass, e0) = energy?;
+                r.step(n)
+                    .map(|s| (mass * s.v * s.v * 0.5 + s.work + s.striker_work - e0) / e0)
+            }),
+        ];
+        // samples[q][level][i] (NaN where a level has no value)
+        let samples: Vec<Vec<Vec<T>>> = getters
+            .iter()
+            .map(|g| {
+                self.runs
+                    .iter()
+                    .map(|r| {
+                        times
+                            .iter()
+                            .enumerate()
+                            .map(|(i, _)| g(r, step_at(r, i)).unwrap_or(T::of(f64::NAN)))
+                            .collect()
+                    })
+                    .collect()
+            })
+            .collect();
+        // their f64 values, for the orders and the estimates
+        let low: Vec<Vec<Vec<f64>>> = samples
+            .iter()
+            .map(|q| {
+                q.iter()
+                    .map(|l| l.iter().map(|v| v.to_f64()).collect())
+                    .collect()
+            })
+            .collect();
+        let usable = |q: usize| -> usize {
+            // times where every level has a value
+            low[q]
+                .iter()
+                .map(|l| l.iter().take_while(|v| v.is_finite()).count())
+                .min()
+                .unwrap_or(0)
+        };
+        let nuse = usable(0);
+        let ords: Vec<Option<f64>> = (0..7)
+            .map(|q| {
+                if self.runs.len() < 3 {
+                    return None;
+                }
+                let s = &low[q];
+                order(&s[0][..nuse], &s[1][..nuse], &s[2][..nuse])
+            })
+            .collect();
+        let est = |q: usize, i: usize| -> Option<f64> {
+            if self.runs.len() < 2 {
+                return None;
+            }
+            // the level differences over the neighbouring report times, and the coarser
+            // pair scaled down by first order: the contact set moves cell by cell, so a
+            // difference may happen to be small at one time
+            let mut d: f64 = 0.0;
+            for j in i.saturating_sub(4)..(i + 5).min(nuse.max(i + 1)) {
+                // the differences in T, then rounded
+                d = d.max((samples[q][0][j] - samples[q][1][j]).abs().to_f64());
+                if let Some(c) = samples[q].get(2) {
+                    d = d.max(0.5 * (samples[q][1][j] - c[j]).abs().to_f64());
+                }
+            }
+            if !d.is_finite() {
+                return None;
+            }
+            // Richardson with the observed order, never below the last difference
+            let factor = ords[q]
+                .filter(|p| *p > 0.0)
+                .map(|p| (1.0 / (2f64.powf(p) - 1.0)).max(1.0))
+                .unwrap_or(1.0);
+            Some(ESTIMATE_SAFETY * d * factor)
+        };
+        let mut rows = Vec::with_capacity(times.len());
+        for (i, &t) in times.iter().enumerate() {
+            let st = &fine.steps[step_at(fine, i) - 1];
+            let val = |q: usize, scale: T| Value {
+                value: samples[q][0][i] * scale,
+                error: if i < nuse {
+                    est(q, i).map(|e| e * scale.to_f64().abs())
+                } else {
+                    None
+                },
+                kind: ErrorKind::Refinement,
+            };
+            let bdot = {
+                let b = |j: usize| samples[2][0][j];
+                let (a, c) = (i.saturating_sub(1), (i + 1).min(times.len() - 1));
+                if c > a {
+                    (b(c) - b(a)) / (times[c] - times[a])
+                } else {
+                    zero
+                }
+            };
+            let speed = bdot.abs();
+            let stage = if speed > 1.0 {
+                Stage::Supersonic
+            } else if speed > self.m {
+                Stage::Transonic
+            } else if speed > self.s_r {
+                Stage::RayleighShear
+            } else {
+                Stage::SubRayleigh
+            };
+            let one = T::of(1.0);
+            let hdot_scale = match self.case.drive {
+                Drive::Free { v0_over_c1, .. } => one / v0_over_c1,
+                _ => one,
+            };
+            let kinetic = self.kinetic(st.v).map(|k| {
+                let e = match (est(1, i), self.mass) {
+                    (Some(dv), Some(mass)) => Some((mass * st.v.abs() * m2).to_f64() * dv),
+                    _ => None,
+                };
+                Value {
+                    value: k,
+                    error: if i < nuse { e } else { None },
+                    kind: ErrorKind::Refinement,
+                }
+            });
+            let work = Value {
+                value: st.work * m2,
+                error: kinetic.and_then(|k| k.error),
+                kind: ErrorKind::Refinement,
+            };
+            let deformable = !matches!(self.case.striker, Striker::Rigid);
+            // under Signorini's law the continuum's defect is exactly 0, so the defect is its
+            // own error and its estimate is never below it (`docs/impact.md`, section 9)
+            let defect = energy.map(|_| {
+                let mut d = val(6, one);
+                if self.case.law == EdgeLaw::Signorini {
+                    let own = d.value.to_f64().abs();
+                    d.error = Some(d.error.map_or(own, |e| e.max(own)));
+                }
+                d
+            });
+            rows.push(HistoryRow {
+                energy_defect: defect,
+                striker_deformation: deformable.then(|| val(4, one)),
+                striker_energy: deformable.then(|| val(5, m2)),
+                t,
+                h: val(0, one),
+                hdot: val(1, hdot_scale),
+                b: val(2, one),
+                bdot,
+                stage,
+                force: {
+                    // under Signorini's law the force pushes: a fit through the steps'
+                    // forces (all >= 0) may dip below zero where the contact ends
+                    let mut f = val(3, m2);
+                    if self.case.law == EdgeLaw::Signorini && f.value < 0.0 {
+                        f.value = T::of(0.0);
+                    }
+                    f
+                },
+                kinetic,
+                work,
+            });
+        }
+        (
+            rows,
+            Orders {
+                h: ords[0],
+                b: ords[2],
+                force: ords[3],
+            },
+        )
+    }
+
+    /// Pressure profile p/(rho c1^2) of the finest grid's step whose middle is nearest to
+    /// c1 t/R = `t` (a step's pressures stand for the middle of the step, `docs/impact.md`,
+    /// section 3): (that time, the cell centres x/R, the pressures).
+    pub fn pressure_at(&self, t: f64) -> Option<(T, Vec<T>, Vec<T>)> {
+        self.pressure_profile(t).map(|p| (p.t, p.x, p.p))
+    }
+
+    /// The pressure profile of [`SolvedImpact::pressure_at`] with an error estimate per cell
+    /// (`docs/impact.md`, section 5), from the next coarser grid (none with one level). The
+    /// finest grid's two steps that make up the coarser grid's step (the same middle time)
+    /// are averaged and taken to the coarser cells ([`coarse_means`]); e_j is four times the
+    /// largest difference |coarse - fine| over the coarser cells within one cell of cell j,
+    /// plus what that comparison cannot see: the cell's second difference
+    /// |p_j - (p_{j-1} + p_{j+1})/2| (a cell-to-cell oscillation, which the coarser cells
+    /// average out) and its difference from the two steps' mean (a step-to-step one).
+    pub fn pressure_profile(&self, t: f64) -> Option<PressureProfile<T>> {
+        let fine = &self.runs[0];
+        let n = ((t / fine.dt.to_f64() + 0.5).round() as usize).clamp(1, fine.steps.len());
+        let st = fine.steps.get(n - 1)?;
+        let m2 = self.m * self.m;
+        let x = (0..st.pressure.len()).map(|j| fine.dx * j as f64).collect();
+        let p: Vec<T> = st.pressure.iter().map(|&v| v * m2).collect();
+        let zero = T::of(0.0);
+        let err = self.runs.get(1).and_then(|coarse| {
+            // the coarse step m spans the fine steps 2m - 1 and 2m (at the end of a run with
+            // an odd number of fine steps, the last whole pair: the difference of
+            // step n from that pair then holds the change over one step)
+            let m = n
+                .div_ceil(2)
+                .min(coarse.steps.len())
+                .min(fine.steps.len() / 2);
+            let cs = coarse.step(m)?;
+            let (a, b) = (fine.step(2 * m - 1)?, fine.step(2 * m)?);
+            let len = a.pressure.len().max(b.pressure.len()).max(p.len());
+            let at = |v: &[T], j: usize| v.get(j).copied().unwrap_or(zero);
+            let pair: Vec<T> = (0..len)
+                .map(|j| (at(&a.pressure, j) + at(&b.pressure, j)) * 0.5)
+                .collect();
+            let agg = coarse_means(&pair, 2);
+            let nc = agg.len().max(cs.pressure.len());
+            let diff: Vec<f64> = (0..nc)
+                .map(|k| ((at(&cs.pressure, k) - at(&agg, k)).abs() * m2).to_f64())
+                .collect();
+            Some(
+                (0..p.len())
+                    .map(|j| {
+                        // the coarse cells overlapping fine cell j, and their neighbours
+                        let lo = (j / 2).saturating_sub(1);
+                        let hi = (j.div_ceil(2) + 1).min(nc - 1);
+                        let d = diff[lo..=hi].iter().fold(0.0, |a: f64, v| a.max(*v));
+                        let left = if j == 0 { at(&p, 1) } else { p[j - 1] };
+                        let rough = (p[j] - (left + at(&p, j + 1)) * 0.5).abs();
+                        let step = (p[j] - pair[j] * m2).abs();
+                        ESTIMATE_SAFETY * d + (rough + step).to_f64()
+                    })
+                    .collect(),
+            )
+        });
+        Some(PressureProfile {
+            t: st.t - fine.dt * 0.5,
+            x,
+            p,
+            err,
+        })
+    }
+}
+
+impl SolvedImpact<f64> {
+    /// The shell striker's strain and vibration kinetic energy over rho c1^2 R^2 after each
+    /// step of the finest grid, (c1 t/R, strain, kinetic), by the modal recursion of
+    /// [`shell_energies`] (independent of the coefficient tables); `None` for other strikers.
+    pub fn shell_energies(&self) -> Option<Result<Vec<(f64, f64, f64)>>> {
+        self.run_shell_energies(&self.runs[0])
+    }
+
+    fn run_shell_energies(&self, run: &Run) -> Option<Result<Vec<(f64, f64, f64)>>> {
+        let Striker::Shell(shell) = &self.case.striker else {
+            return None;
+        };
+        let m2 = self.m * self.m;
+        Some((|| {
+            let ring = Ring::new(shell, self.m)?;
+            let pressures: Vec<Vec<f64>> = run.steps.iter().map(|s| s.pressure.clone()).collect();
+            let e = shell_energies(&ring, run.dx, run.dt, &pressures)?;
+            Ok(run
+                .steps
+                .iter()
+                .zip(e)
+                .map(|(s, (u, k))| (s.t, u * m2, k * m2))
+                .collect())
+        })())
+    }
+
+    /// The shell striker's (strain, vibration kinetic) energy over rho c1^2 R^2 at the times
+    /// of `rows` (from [`SolvedImpact::history`]), each with an error estimate: four times the
+    /// difference between the two finest levels (the factor of the history's estimates),
+    /// plus the modal truncation bound. `None` for other strikers.
+    pub fn shell_energy_history(&self, rows: &[HistoryRow]) -> Option<Result<Vec<(Value, Value)>>> {
+        let fine = match self.run_shell_energies(&self.runs[0])? {
+            Ok(v) => v,
+            Err(e) => return Some(Err(e)),
+        };
+        let coarse = match self.runs.get(1).map(|r| self.run_shell_energies(r)) {
+            Some(Some(Ok(v))) => Some(v),
+            Some(Some(Err(e))) => return Some(Err(e)),
+            _ => None,
+        };
+        let at = |list: &[(f64, f64, f64)], dt: f64, t: f64| -> Option<(f64, f64)> {
+            let n = (t / dt).round() as usize;
+            (n >= 1)
+                .then(|| list.get(n - 1).map(|e| (e.1, e.2)))
+                .flatten()
+        };
+        let mut out = Vec::with_capacity(rows.len());
+        for r in rows {
+            let (u, k) = match at(&fine, self.runs[0].dt, r.t) {
+                Some(v) => v,
+                None => {
+                    return Some(Err(ImpactError::Step {
+                        time: format!("{:.6}", r.t),
+                        reason: "no step of the finest grid at this report time".into(),
+                    }))
+                }
+            };
+            let floor = self.runs[0].coefficient_error * (u + k).abs();
+            let err = coarse.as_ref().and_then(|c| {
+                at(c, self.runs[1].dt, r.t)
+                    .map(|(uc, kc)| (4.0 * (u - uc).abs() + floor, 4.0 * (k - kc).abs() + floor))
+            });
+            out.push((
+                Value {
+                    value: u,
+                    error: err.map(|e| e.0),
+                    kind: ErrorKind::Refinement,
+                },
+                Value {
+                    value: k,
+                    error: err.map(|e| e.1),
+                    kind: ErrorKind::Refinement,
+                },
+            ));
+        }
+        Some(Ok(out))
+    }
+}
+
+impl<T: Scalar> SolvedImpact<T> {
+    /// The intervals of c1 t/R over which a prescribed (kinematic) edge advanced faster than
+    /// the Rayleigh wave and slower than c1, on the finest grid (the edge's speed over the last
+    /// four steps, as the march takes it); empty under Signorini's law. A prescribed edge
+    /// moving steadily at such speeds has no solution (`docs/edge.md`, section 5: the Rayleigh
+    /// points inside the contact ask a second condition of the edge's one free amplitude), and
+    /// the march's pressure near the edge does not converge there (`docs/impact.md`, section
+    /// 8); the free edge has a solution at every speed.
+    pub fn edge_without_solution(&self) -> Vec<(T, T)> {
+        let mut out: Vec<(T, T)> = Vec::new();
+        if self.case.law != EdgeLaw::Kinematic {
+            return out;
+        }
+        let Some(run) = self.runs.first() else {
+            return out;
+        };
+        let steps = &run.steps;
+        let mut open: Option<T> = None;
+        for n in 0..steps.len() {
+            let t = steps[n].t;
+            let speed = crate::march::recent_edge_speed(&steps[..=n], run.dt);
+            let inside = speed > self.s_r && speed < 1.0;
+            match (inside, open) {
+                (true, None) => open = Some(t),
+                (false, Some(from)) => {
+                    out.push((from, steps[n - 1].t));
+                    open = None;
+                }
+                _ => {}
+            }
+        }
+        if let (Some(from), Some(last)) = (open, steps.last()) {
+            out.push((from, last.t));
+        }
+        out
+    }
+
+    /// The largest force over rho c1^2 R on the finest grid, its time, and whether it is a
+    /// peak: whether the force has turned down after it (the run's last force below
+    /// [`PEAK_DROP`] times the largest, or the contact over). A largest force that is not a
+    /// peak is the value at the end of a run whose force still rises.
+    pub fn peak_force(&self) -> Option<(T, T, bool)> {
+        let m2 = self.m * self.m;
+        let run = &self.runs[0];
+        let (f, t) = (1..=run.steps.len())
+            .filter_map(|n| run.force_at(n).map(|f| (f * m2, run.steps[n - 1].t)))
+            .max_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal))?;
+        let last = run.force_at(run.steps.len()).map(|f| f * m2)?;
+        let turned_down = last < f * PEAK_DROP || run.steps.last()?.pressure.is_empty();
+        Some((f, t, turned_down))
+    }
+}
+
+/// The share of the largest force the run's last force must fall below for the largest to
+/// be reported as a peak ([`SolvedImpact::peak_force`]).
+pub const PEAK_DROP: f64 = 0.99;
