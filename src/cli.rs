@@ -3,6 +3,7 @@
 //! shortened to a readable width, and output that ends quietly when its reader has gone.
 
 use std::io::Write;
+use std::process::ExitCode;
 
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::Args;
@@ -168,6 +169,47 @@ pub fn shorten_numbers(message: &str) -> String {
 pub fn print(text: &str) {
     let mut out = std::io::stdout().lock();
     let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
+}
+
+/// Prints `report` as JSON (`json`) or in its plain form (a table, or CSV with the command
+/// line in its `#` header); a closed pipe ends the output quietly.
+pub fn emit(report: &impl crate::report::Printed, json: bool) {
+    print(&if json {
+        report.json_text()
+    } else {
+        report.plain_text(&command_line())
+    });
+}
+
+/// A command-line program: parses its flags as `C` (a usage error is one line on stderr with
+/// exit code 2; help and version print and exit 0), runs `run`, and ends with exit code 0,
+/// or 2 with the error on one line, its numbers shortened.
+pub fn program<C: clap::Parser, E: std::fmt::Display>(
+    name: &str,
+    run: impl FnOnce(C) -> Result<(), E>,
+) -> ExitCode {
+    let cli = match C::try_parse() {
+        Ok(c) => c,
+        Err(e) => {
+            return match usage_error(name, &e) {
+                None => {
+                    let _ = e.print();
+                    ExitCode::SUCCESS
+                }
+                Some(line) => {
+                    eprintln!("{}", line.trim_end());
+                    ExitCode::from(2)
+                }
+            };
+        }
+    };
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("{name}: {}", shorten_numbers(&e.to_string()));
+            ExitCode::from(2)
+        }
+    }
 }
 
 /// The command line as it was typed, for the CSV headers.

@@ -206,6 +206,7 @@ impl RunInput {
 /// contact reaches as it goes).
 pub fn run(input: &RunInput, progress: impl FnMut(impact::Progress)) -> R<RunReport> {
     let mut c = input.case()?;
+    c.validate()?;
     if !(input.memory_limit_gib.is_finite() && input.memory_limit_gib > 0.0) {
         return Err(InputError::new(
             "memory_limit_gib",

@@ -263,7 +263,7 @@ fn stated_ranges_are_the_enforced_ranges() {
     let run = |f: &dyn Fn(&mut RunInput)| -> Result<(), String> {
         let mut input = run_input(|_| {});
         input.pressure_at = None;
-        input.end = "c1t/R=0.5".into();
+        input.end = "c1t/R=1".into();
         input.dx = 0.02;
         f(&mut input);
         impact_api::run(&input, |_| {})

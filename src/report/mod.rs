@@ -18,6 +18,53 @@ pub mod wedge;
 
 use self::wedge::Selection;
 
+/// A report as the command lines print it: its JSON, and its plain form.
+pub trait Printed {
+    /// The report as one JSON object.
+    fn to_json(&self) -> Value;
+    /// The JSON as printed: one line for the wedge's reports, indented for the impact's.
+    fn json_text(&self) -> String;
+    /// The plain form: a table (the wedge's reports) or CSV with `#` header lines holding
+    /// `cmdline` (the impact's).
+    fn plain_text(&self, cmdline: &str) -> String;
+}
+
+macro_rules! printed {
+    ($t:ty, one_line, table) => {
+        impl Printed for $t {
+            fn to_json(&self) -> Value {
+                <$t>::to_json(self)
+            }
+            fn json_text(&self) -> String {
+                format!("{}\n", <$t>::to_json(self))
+            }
+            fn plain_text(&self, _cmdline: &str) -> String {
+                self.to_table()
+            }
+        }
+    };
+    ($t:ty, indented, csv) => {
+        impl Printed for $t {
+            fn to_json(&self) -> Value {
+                <$t>::to_json(self)
+            }
+            fn json_text(&self) -> String {
+                serde_json::to_string_pretty(&<$t>::to_json(self)).unwrap_or_default() + "\n"
+            }
+            fn plain_text(&self, cmdline: &str) -> String {
+                self.to_csv(cmdline)
+            }
+        }
+    };
+}
+
+printed!(wedge::SolveReport, one_line, table);
+printed!(wedge::StressReport, one_line, table);
+printed!(wedge::FieldReport, one_line, table);
+printed!(impact::RunReport, indented, csv);
+printed!(impact::GreenReport, indented, csv);
+printed!(impact::EdgeReport, indented, csv);
+
 /// A JSON number with exactly the digits given (arbitrary precision); null for text that is
 /// not a number.
 pub fn num(s: &str) -> Value {

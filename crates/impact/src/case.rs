@@ -172,7 +172,10 @@ impl ImpactCase {
         self
     }
 
-    pub(crate) fn validate(&self) -> Result<()> {
+    /// Checks every input against its admissible range (the profile, the striker, the
+    /// drive, the end, the grid), as the solve does first: an error naming the first input out
+    /// of range.
+    pub fn validate(&self) -> Result<()> {
         self.profile.validate()?;
         self.striker.validate()?;
         if let Striker::Shell(shell) = &self.striker {

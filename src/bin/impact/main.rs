@@ -14,7 +14,7 @@
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
-use dyncontact::cli::{command_line, print, shorten_numbers, usage_error, MaterialArgs};
+use dyncontact::cli::{emit, program, MaterialArgs};
 use dyncontact::impact_api::{self, EdgeInput, GreenInput, RunInput};
 use dyncontact::Error;
 
@@ -22,7 +22,7 @@ use dyncontact::Error;
 /// paper): rigid, elastic and thin-shell strikers over a whole impact to their rebound,
 /// Lamb's surface influence functions, and the pressure at a moving contact edge.
 #[derive(Parser, Debug)]
-#[command(name = "impact", version, about, long_about = None, arg_required_else_help = true)]
+#[command(name = "impact", version, arg_required_else_help = true)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -189,10 +189,6 @@ fn run_with_progress(input: &RunInput) -> Result<dyncontact::report::impact::Run
     r
 }
 
-fn json_text(v: &serde_json::Value) -> String {
-    serde_json::to_string_pretty(v).unwrap_or_default() + "\n"
-}
-
 fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Green(a) => {
@@ -205,12 +201,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 constants: a.constants,
                 digits: a.digits,
             };
-            let r = impact_api::green(&input)?;
-            print(&if a.json {
-                json_text(&r.to_json())
-            } else {
-                r.to_csv(&command_line())
-            });
+            emit(&impact_api::green(&input)?, a.json);
         }
         Command::Run(a) => {
             let (c1, c2, poisson) = a.material.numbers()?;
@@ -235,12 +226,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 force: a.force,
                 memory_limit_gib: a.memory_limit_gib,
             };
-            let r = run_with_progress(&input)?;
-            print(&if a.json {
-                json_text(&r.to_json())
-            } else {
-                r.to_csv(&command_line())
-            });
+            emit(&run_with_progress(&input)?, a.json);
         }
         Command::Edge(a) => {
             let (c1, c2, poisson) = a.material.numbers()?;
@@ -251,38 +237,12 @@ fn run(cli: Cli) -> Result<(), Error> {
                 speed_over_c1: a.speed_over_c1,
                 law: a.law,
             };
-            let r = impact_api::edge(&input)?;
-            print(&if a.json {
-                json_text(&r.to_json())
-            } else {
-                r.to_csv(&command_line())
-            });
+            emit(&impact_api::edge(&input)?, a.json);
         }
     }
     Ok(())
 }
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
-        Ok(c) => c,
-        Err(e) => {
-            return match usage_error("impact", &e) {
-                None => {
-                    let _ = e.print();
-                    ExitCode::SUCCESS
-                }
-                Some(line) => {
-                    eprintln!("{}", line.trim_end());
-                    ExitCode::from(2)
-                }
-            };
-        }
-    };
-    match run(cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("impact: {}", shorten_numbers(&e.to_string()));
-            ExitCode::from(2)
-        }
-    }
+    program("impact", run)
 }

@@ -11,7 +11,7 @@ use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use dyncontact::cli::{print, shorten_numbers, usage_error};
+use dyncontact::cli::{emit, program};
 use dyncontact::input::wedge::{check_spacing, linspace, parse_params, parse_points, parse_range};
 use dyncontact::{
     solve, CaseInput, Selection, SolveReport, Speed, ADMISSIBILITY_KEYS, SIGN_KEYS, VERSION,
@@ -30,7 +30,7 @@ use wedge::{Coupling, Indenter, Material, Param, Result, Solution, WedgeError};
 /// condition u_theta + beta u_r = -V t + r cot Theta. Results are dimensionless: speeds over
 /// c1 or V, stresses over mu cot Theta, displacements over c1 t cot Theta or V t.
 #[derive(Parser, Debug)]
-#[command(name = "wedge", version, about, long_about = None, arg_required_else_help = true)]
+#[command(name = "wedge", version, arg_required_else_help = true)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -313,12 +313,10 @@ fn run(cli: Cli) -> Result<()> {
             select,
         } => {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
-            let r = solve(&inp, &speed_of(&speed)?, &select.selection()?)?;
-            if out.json {
-                print(&format!("{}\n", r.to_json()));
-            } else {
-                print(&r.to_table());
-            }
+            emit(
+                &solve(&inp, &speed_of(&speed)?, &select.selection()?)?,
+                out.json,
+            );
         }
         Command::Stress {
             case,
@@ -328,12 +326,10 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let inp = input(&case, out.digits, Defaults::ByFriction)?;
             let at = parse_params("at", &at)?;
-            let r = dyncontact::stress(&inp, &speed_of(&speed)?, &at)?;
-            if out.json {
-                print(&format!("{}\n", r.to_json()));
-            } else {
-                print(&r.to_table());
-            }
+            emit(
+                &dyncontact::stress(&inp, &speed_of(&speed)?, &at)?,
+                out.json,
+            );
         }
         Command::Field {
             case,
@@ -343,12 +339,10 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let inp = input(&case, out.digits, Defaults::Paper)?;
             let pts = parse_points("at", &at)?;
-            let r = dyncontact::field(&inp, &speed_of(&speed)?, &pts)?;
-            if out.json {
-                print(&format!("{}\n", r.to_json()));
-            } else {
-                print(&r.to_table());
-            }
+            emit(
+                &dyncontact::field(&inp, &speed_of(&speed)?, &pts)?,
+                out.json,
+            );
         }
         Command::Curve {
             case,
@@ -455,26 +449,5 @@ fn run(cli: Cli) -> Result<()> {
 }
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
-        Ok(c) => c,
-        Err(e) => {
-            return match usage_error("wedge", &e) {
-                None => {
-                    let _ = e.print();
-                    ExitCode::SUCCESS
-                }
-                Some(line) => {
-                    eprintln!("{}", line.trim_end());
-                    ExitCode::from(2)
-                }
-            };
-        }
-    };
-    match run(cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("wedge: {}", shorten_numbers(&e.to_string()));
-            ExitCode::from(2)
-        }
-    }
+    program("wedge", run)
 }
