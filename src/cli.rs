@@ -42,9 +42,12 @@ fn finite(
     }
 }
 
+/// The material flags as numbers: (c1, c2, poisson), each as given or absent.
+pub type MaterialNumbers = (Option<f64>, Option<f64>, Option<f64>);
+
 impl MaterialArgs {
     /// The three flags as f64 (each refused, naming it, when it is not a finite number).
-    pub fn numbers(&self) -> Result<(Option<f64>, Option<f64>, Option<f64>), InputError> {
+    pub fn numbers(&self) -> Result<MaterialNumbers, InputError> {
         Ok((
             finite("c1", "--c1", &self.c1)?,
             finite("c2", "--c2", &self.c2)?,

@@ -5,12 +5,11 @@
 //! `impact`, the `figures` generator and other front ends parse their inputs with
 //! [`input`] and print the reports; they compute nothing themselves.
 //!
-//! The wedge:
-//! One constructor, [`build`], solves any solution variant (the paper's construction or the
+//! For the wedge, one constructor, [`build`], solves any solution variant (the paper's construction or the
 //! genuine solution) from the material, the indenter, the contact speed (alpha or V) and the
 //! precision, behind one interface, [`wedge::ContactSolution`]. The report builders
 //! ([`solve`], [`curve_row`], [`stress`], [`field`]) return typed reports
-//! ([`report::SolveReport`], ...) whose numbers carry their own error estimates; the command
+//! ([`report::wedge::SolveReport`], ...) whose numbers carry their own error estimates; the command
 //! line serialises them. Field names are the report keys, which spell out the normalisation:
 //! `v_over_c1_cot_theta` is V/(c1 cot Theta), `force_over_a_mu_cot_theta` is
 //! P/(alpha t mu cot Theta), and so on.
