@@ -219,31 +219,3 @@ pub fn program<C: clap::Parser, E: std::fmt::Display>(
 pub fn command_line() -> String {
     std::env::args().collect::<Vec<_>>().join(" ")
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn long_numbers_are_cut_and_short_ones_kept() {
-        let long = format!(
-            "invalid gamma = 0.{}: out of range",
-            "1234567890".repeat(60)
-        );
-        let s = shorten_numbers(&long);
-        assert!(s.len() < 80, "{s}");
-        assert!(s.contains("0.12345678901234567..."), "{s}");
-        assert!(s.contains("(601 digits)"), "{s}");
-        let short = "invalid kappa = 0.4: admissible range is [0.5, 64] and 1e-300";
-        assert_eq!(shorten_numbers(short), short);
-    }
-
-    #[test]
-    fn flags_are_named_as_typed() {
-        assert_eq!(flag_name("--theta-deg <THETA_DEG>"), "--theta-deg");
-        assert_eq!(
-            flag_name("<--alpha <ALPHA>|--speed <SPEED>>"),
-            "--alpha or --speed"
-        );
-    }
-}

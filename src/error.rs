@@ -46,14 +46,49 @@ pub enum Error {
     Lamb(#[from] lamb::LambError),
 }
 
+/// The flag (underscores for dashes) of an engine's parameter name: the engines name their
+/// inputs in words ("kappa = c1 dt/dx", "refinement levels"); a front end names the flag.
+pub fn flag_of(name: &'static str) -> &'static str {
+    match name {
+        "kappa = c1 dt/dx" => "kappa",
+        "refinement levels" => "levels",
+        "cell width dx/R" => "dx",
+        "V0/c1" => "v0_over_c1",
+        "mass ratio m0/(rho R^2)" => "mass_ratio",
+        "mass ratio m0/(rho R^2) of a shell striker" => "mass_ratio",
+        "end time c1 t/R" => "end",
+        "driven table" | "driven speed V/c1" => "driven",
+        "Poisson's ratio" => "poisson",
+        "c2/c1" => "c2",
+        "s" => "at",
+        "sa" | "sb" | "cell [sa, sb]" => "cells",
+        "speed_over_c1" => "speed_over_c1",
+        "profile"
+        | "profile of a shell striker"
+        | "profile exponent k"
+        | "wedge half-angle theta_deg" => "profile",
+        "striker"
+        | "shell thickness h_s/R"
+        | "striker density ratio rho_s/rho"
+        | "striker c1 over the half-plane's c1"
+        | "striker c2 over the half-plane's c1" => "striker",
+        other => other,
+    }
+}
+
 impl Error {
-    /// The parameter a bad input names, or `None` for a numerical failure.
+    /// The parameter a bad input names (the flag's name, underscores for dashes), or `None`
+    /// for a numerical failure.
     pub fn parameter(&self) -> Option<&'static str> {
+        use impact::ImpactError as I;
+        use lamb::LambError as L;
         match self {
             Error::Input(e) => Some(e.parameter),
             Error::Wedge(wedge::WedgeError::InvalidParameter(p)) => Some(p.name),
-            Error::Impact(impact::ImpactError::InvalidParameter(p)) => Some(p.name),
-            Error::Lamb(lamb::LambError::InvalidParameter(p)) => Some(p.name),
+            Error::Impact(I::InvalidParameter(p))
+            | Error::Impact(I::Lamb(L::InvalidParameter(p)))
+            | Error::Lamb(L::InvalidParameter(p)) => Some(flag_of(p.name)),
+            Error::Impact(I::Grid { name, .. }) => Some(flag_of(name)),
             _ => None,
         }
     }

@@ -19,7 +19,7 @@ use crate::report::impact::{EdgeReport, GreenReport, RunReport};
 
 /// The most digits a run gives: the march runs in double-double (about 32 digits) above
 /// f64.
-pub const MAX_DIGITS: u32 = 30;
+pub const RUN_MAX_DIGITS: u32 = 30;
 
 type R<T> = std::result::Result<T, Error>;
 
@@ -60,7 +60,7 @@ pub struct RunInput {
     pub edge_cell: String,
     /// Pressure profiles at `c1t/R=T1,T2,...`.
     pub pressure_at: Option<String>,
-    /// Significant digits (1 to [`MAX_DIGITS`], the march in double-double); `None` for f64.
+    /// Significant digits (1 to [`RUN_MAX_DIGITS`], the march in double-double); `None` for f64.
     pub digits: Option<u32>,
     /// Run even above the memory limit.
     pub force: bool,
@@ -200,7 +200,7 @@ impl RunInput {
 
 /// Runs the impact of `input`, calling `progress` as the march goes on, and reports it.
 ///
-/// Refused before any work: a bad input (naming it), `digits` outside 1 to [`MAX_DIGITS`], a
+/// Refused before any work: a bad input (naming it), `digits` outside 1 to [`RUN_MAX_DIGITS`], a
 /// pressure time outside the run, and a run whose estimated memory exceeds
 /// `memory_limit_gib` without `force` (to the separation, the march checks the width the
 /// contact reaches as it goes).
@@ -231,11 +231,11 @@ pub fn run(input: &RunInput, progress: impl FnMut(impact::Progress)) -> R<RunRep
         }
     }
     if let Some(d) = input.digits {
-        if !(1..=MAX_DIGITS).contains(&d) {
+        if !(1..=RUN_MAX_DIGITS).contains(&d) {
             return Err(InputError::new(
                 "digits",
                 format!(
-                    "invalid --digits {d}: admissible range is 1..={MAX_DIGITS} (the march runs in double-double above f64)"
+                    "invalid --digits {d}: admissible range is 1..={RUN_MAX_DIGITS} (the march runs in double-double above f64)"
                 ),
             )
             .into());
@@ -265,7 +265,7 @@ pub fn run(input: &RunInput, progress: impl FnMut(impact::Progress)) -> R<RunRep
         None => {
             let sol = c.solve_reporting::<f64>(progress)?;
             let (mut r, rows) = RunReport::of(&sol, version, None, &times).map_err(to_error)?;
-            r.add_shell_energy(&sol, &rows).map_err(to_error)?;
+            r.add_shell_energy(&sol, &rows)?;
             r
         }
         Some(d) => {
@@ -278,9 +278,20 @@ pub fn run(input: &RunInput, progress: impl FnMut(impact::Progress)) -> R<RunRep
     Ok(report)
 }
 
-/// A report's own refusal (a pressure time beyond the run's last step), or a failure.
-fn to_error(message: String) -> Error {
-    InputError::new("pressure_at", message).into()
+/// A report's own refusal: a pressure time beyond the run's last step, or a value that is
+/// not finite (named).
+fn to_error(e: crate::report::impact::ReportError) -> Error {
+    match e {
+        crate::report::impact::ReportError::PressureTime(message) => {
+            InputError::new("pressure_at", message).into()
+        }
+        crate::report::impact::ReportError::NotFinite(key) => {
+            Error::Impact(impact::ImpactError::Step {
+                time: "the report".into(),
+                reason: format!("{key} is not finite"),
+            })
+        }
+    }
 }
 
 /// The inputs of `impact green`, named as its flags; numbers as decimal text, parsed at the
@@ -381,10 +392,10 @@ fn green_at<T: CachedRules>(a: &GreenInput, bits: u32, digits: usize) -> R<Green
             let mut points = Vec::new();
             for text in split_list("at", "--at", at)? {
                 let s: T = parse_num("at", "s", &text, bits)?;
-                if s == 0.0 {
+                if !(s > 0.0) {
                     return Err(InputError::new(
                         "at",
-                        "invalid s = 0: admissible range is (0, inf) for pointwise values (the step responses diverge at s = 0, i.e. at x = 0 or t -> inf)",
+                        "invalid s <= 0: admissible range is (0, inf) for pointwise values (the step responses diverge at s = 0, i.e. at x = 0 or t -> inf)",
                     )
                     .into());
                 }
@@ -434,6 +445,14 @@ fn green_at<T: CachedRules>(a: &GreenInput, bits: u32, digits: usize) -> R<Green
 pub fn green(input: &GreenInput) -> R<GreenReport> {
     match input.digits {
         None => green_at::<f64>(input, 53, 17),
+        Some(d) if !(1..=crate::MAX_DIGITS).contains(&d) => Err(InputError::new(
+            "digits",
+            format!(
+                "invalid --digits {d}: admissible range is 1..={}",
+                crate::MAX_DIGITS
+            ),
+        )
+        .into()),
         Some(d) => {
             let p = Precision::from_digits(d, 24)
                 .map_err(|e| InputError::new("digits", e.to_string()))?;

@@ -43,6 +43,10 @@ pub use report::{print_floor, Entry, Quantity};
 /// Library version, written into every output header.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
+/// The most significant digits a case is computed with (MPFR): `wedge --digits`, `impact
+/// green --digits`.
+pub const MAX_DIGITS: u32 = 2000;
+
 /// Guard bits added to the precision that holds the requested digits.
 pub const GUARD_BITS: u32 = 32;
 

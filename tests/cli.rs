@@ -367,7 +367,7 @@ fn bad_input_exits_2_with_one_line_naming_the_parameter() {
         ),
         (
             &["curve", "--theta-deg", "86", "--alpha-range", "10,5,3"],
-            "alpha-range",
+            "alpha_range",
         ),
     ];
     for (args, name) in cases {

@@ -301,3 +301,146 @@ fn stated_ranges_are_the_enforced_ranges() {
     };
     probe("theta_deg", 95.0, None, &wedge);
 }
+
+/// A bad input names its parameter as the flag is named, underscores for dashes: the name a
+/// keyword argument of another front end carries.
+#[test]
+fn bad_inputs_name_their_flag() {
+    let run = |f: &dyn Fn(&mut RunInput)| {
+        let mut input = run_input(|_| {});
+        f(&mut input);
+        impact_api::run(&input, |_| {})
+            .err()
+            .and_then(|e| e.parameter())
+    };
+    assert_eq!(run(&|r| r.kappa = 0.4), Some("kappa"));
+    assert_eq!(run(&|r| r.levels = 5), Some("levels"));
+    assert_eq!(run(&|r| r.v0_over_c1 = Some(1.5)), Some("v0_over_c1"));
+    assert_eq!(run(&|r| r.mass_ratio = Some(-1.0)), Some("mass_ratio"));
+    assert_eq!(run(&|r| r.dx = 0.0), Some("dx"));
+    assert_eq!(run(&|r| r.digits = Some(31)), Some("digits"));
+    assert_eq!(run(&|r| r.end = "t=1".into()), Some("end"));
+    assert_eq!(run(&|r| r.profile = "circle".into()), Some("profile"));
+    assert_eq!(
+        run(&|r| r.profile = "wedge:theta_deg=120".into()),
+        Some("profile")
+    );
+    assert_eq!(run(&|r| r.striker = "x:y".into()), Some("striker"));
+    assert_eq!(
+        run(&|r| r.pressure_at = Some("c1t/R=5".into())),
+        Some("pressure_at")
+    );
+    assert_eq!(run(&|r| r.end = "c1t/R=0.01".into()), Some("dx"));
+    let edge = impact_api::edge(&EdgeInput {
+        poisson: Some(0.7),
+        speed_over_c1: Some("0.3".into()),
+        ..EdgeInput::default()
+    });
+    assert_eq!(edge.err().and_then(|e| e.parameter()), Some("poisson"));
+    for (input, flag) in [
+        (
+            GreenInput {
+                poisson: Some("0.25".into()),
+                at: Some("-1".into()),
+                ..GreenInput::default()
+            },
+            "at",
+        ),
+        (
+            GreenInput {
+                poisson: Some("0.25".into()),
+                at: Some("0.5".into()),
+                digits: Some(3000),
+                ..GreenInput::default()
+            },
+            "digits",
+        ),
+        (
+            GreenInput {
+                poisson: Some("0.25".into()),
+                cells: Some("0.5:0.2".into()),
+                ..GreenInput::default()
+            },
+            "cells",
+        ),
+    ] {
+        let e = impact_api::green(&input).unwrap_err();
+        assert_eq!(e.parameter(), Some(flag), "{e}");
+    }
+}
+
+/// The key lists, `items`, `quantities` and the mutable list the merges use name the same
+/// entries in the same order: a field added to the report and forgotten in one of them
+/// fails here.
+#[test]
+fn key_lists_match_the_report_fields() {
+    let input = CaseInput {
+        material: Material::paper(),
+        indenter: Indenter::new(86.0, 0.5, Coupling::On).unwrap(),
+        solution: Solution::Paper,
+        digits: None,
+    };
+    let speed = Speed::Alpha(Param::parse("alpha", "500").unwrap());
+    let mut r = dyncontact::solve(&input, &speed, &Selection::without_admissibility()).unwrap();
+    let items: Vec<&str> = r.items().into_iter().map(|(k, _)| k).collect();
+    assert_eq!(items, SOLVE_KEYS);
+    let numbers: Vec<&str> = r.quantities().into_iter().map(|(k, _)| k).collect();
+    assert_eq!(numbers, dyncontact::ESTIMATED_KEYS);
+    let mut mutable: Vec<&str> = r.quantities_mut().into_iter().map(|(k, _)| k).collect();
+    mutable.sort_unstable();
+    let mut expected = dyncontact::ESTIMATED_KEYS.to_vec();
+    expected.sort_unstable();
+    assert_eq!(mutable, expected);
+}
+
+/// Decimal text in any form the inputs accept is written as a JSON number.
+#[test]
+fn decimal_text_in_any_accepted_form_is_a_json_number() {
+    use dyncontact::report::num;
+    for (text, json) in [
+        ("+86", "86"),
+        (".5", "0.5"),
+        ("-.5", "-0.5"),
+        ("500.", "500.0"),
+        ("086", "86"),
+        ("0.001", "0.001"),
+        ("1e-3", "1e-3"),
+        ("561.249", "561.249"),
+    ] {
+        assert_eq!(num(text).to_string(), json, "{text}");
+    }
+    assert_eq!(num("2E+5").as_f64(), Some(2e5));
+    assert!(num("abc").is_null());
+}
+
+/// A curve's points are plain, trimmed decimal text.
+#[test]
+fn decimal_text_is_plain_and_trimmed() {
+    use dyncontact::input::wedge::decimal_text;
+    use rug::Float;
+    let f = |s: &str, d| decimal_text(&Float::with_val(200, Float::parse(s).unwrap()), d);
+    assert_eq!(f("200", 17), "200");
+    assert_eq!(f("427.0", 17), "427");
+    assert_eq!(f("177.18", 17), "177.18");
+    assert_eq!(f("0.000123", 17), "0.000123");
+    assert_eq!(f("1e-9", 17), "1e-9");
+    assert_eq!(f("-2.5", 17), "-2.5");
+    assert_eq!(f("1234.5678", 6), "1234.57");
+    assert_eq!(f("0.1", 40), "0.1");
+}
+
+/// Numbers longer than a message can show are cut, short ones kept.
+#[test]
+fn long_numbers_are_cut_and_short_ones_kept() {
+    use dyncontact::cli::shorten_numbers;
+    let long = format!(
+        "invalid gamma = 0.{}: out of range",
+        "1234567890".repeat(60)
+    );
+    let s = shorten_numbers(&long);
+    assert!(s.len() < 80, "{s}");
+    assert!(s.contains("0.12345678901234567..."), "{s}");
+    assert!(s.contains("(601 digits)"), "{s}");
+    let short = "invalid kappa = 0.4: admissible range is [0.5, 64] and 1e-300";
+    assert_eq!(shorten_numbers(short), short);
+}

@@ -261,7 +261,7 @@ fn a_grid_spaced_below_f64_resolution_is_refused() {
         assert_eq!(code, 2, "{range}: {out}");
         assert_eq!(err.trim().lines().count(), 1, "{err}");
         assert!(
-            err.contains("alpha-range") && err.contains("resolution"),
+            err.contains("alpha_range") && err.contains("resolution"),
             "{err}"
         );
     }

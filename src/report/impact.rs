@@ -146,6 +146,15 @@ const RUN_SUMMARY_KEYS: &[&str] = &[
     "resolution",
 ];
 
+/// Why a run's report could not be formed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ReportError {
+    /// A pressure profile asked for at a time outside the run (the message says which).
+    PressureTime(String),
+    /// A reported value that is not finite (its key).
+    NotFinite(String),
+}
+
 /// One history column: a value per reported time and, where estimated, an absolute error
 /// estimate per value (from the grid levels).
 #[derive(Clone, Debug, PartialEq)]
@@ -338,7 +347,7 @@ impl RunReport {
         version: &str,
         digits: Option<usize>,
         pressure_at: &[f64],
-    ) -> Result<(Self, Vec<impact::HistoryRow<T>>), String> {
+    ) -> Result<(Self, Vec<impact::HistoryRow<T>>), ReportError> {
         let dg = |x: T| number(x, digits);
         let (rows, orders) = sol.history();
         let driven = !matches!(sol.case.drive, Drive::Free { .. });
@@ -514,7 +523,8 @@ impl RunReport {
             .iter()
             .filter_map(|r| r.energy_defect.as_ref())
             .map(|d| d.value.to_f64().abs())
-            .reduce(f64::max)
+            // a NaN defect propagates (and is refused by the finiteness check)
+            .reduce(|a, d| if a.is_nan() || d.is_nan() { f64::NAN } else { a.max(d) })
             .map(|worst| {
                 let within = worst <= ENERGY_DEFECT_BOUND;
                 EnergyAudit {
@@ -550,9 +560,9 @@ impl RunReport {
             let mut list = Vec::new();
             for &t in pressure_at {
                 if !(t > 0.0 && t <= last * (1.0 + 1e-12)) {
-                    return Err(format!(
+                    return Err(ReportError::PressureTime(format!(
                         "invalid --pressure-at time {t}: admissible range is (0, {last}], the run's times"
-                    ));
+                    )));
                 }
                 if let Some(prof) = sol.pressure_profile(t) {
                     list.push(PressureReport {
@@ -607,7 +617,58 @@ impl RunReport {
             shell_energy: Vec::new(),
             unavailable: why,
         };
+        report.check_finite()?;
         Ok((report, rows))
+    }
+
+    /// Every reported number finite, or the key of the first that is not.
+    fn check_finite(&self) -> Result<(), ReportError> {
+        let bad = |key: &str| Err(ReportError::NotFinite(key.to_string()));
+        let all = |xs: &[Number]| xs.iter().all(|x| x.value.is_finite());
+        for col in self.columns.iter().chain(&self.shell_energy) {
+            if !all(&col.values) {
+                return bad(col.key);
+            }
+            if col.errors.iter().flatten().any(|e| !e.is_finite()) {
+                return bad(&format!("the error estimate of {}", col.key));
+            }
+        }
+        if !all(&self.c1t_over_r) || !all(&self.bdot_over_c1) {
+            return bad("c1t_over_R or bdot_over_c1");
+        }
+        if let Some(p) = &self.peak {
+            if !all(&[p.force_over_rho_c1sq_r.clone(), p.c1t_over_r.clone()]) {
+                return bad("peak_force");
+            }
+        }
+        if let Some(r) = &self.rebound {
+            for (k, e) in [
+                ("separation_c1t_over_R", &r.separation_c1t_over_r),
+                ("restitution", &r.restitution),
+                ("rebound_speed_over_c1", &r.rebound_speed_over_c1),
+                ("energy_to_half_plane", &r.energy_to_half_plane),
+            ] {
+                if !e.value.value.is_finite() || e.error.is_some_and(|x| !x.is_finite()) {
+                    return bad(k);
+                }
+            }
+        }
+        if self
+            .energy_audit
+            .as_ref()
+            .is_some_and(|a| !a.largest_defect.is_finite())
+        {
+            return bad("energy_defect");
+        }
+        for p in self.pressure.iter().flatten() {
+            if !all(&p.x_over_r)
+                || !all(&p.p_over_rho_c1sq)
+                || p.error_estimate.iter().flatten().any(|e| !e.is_finite())
+            {
+                return bad("pressure");
+            }
+        }
+        Ok(())
     }
 
     /// Adds the shell striker's strain and vibration energies with their estimates (f64: the
@@ -616,11 +677,11 @@ impl RunReport {
         &mut self,
         sol: &SolvedImpact,
         rows: &[impact::HistoryRow],
-    ) -> Result<(), String> {
+    ) -> Result<(), impact::ImpactError> {
         let Some(parts) = sol.shell_energy_history(rows) else {
             return Ok(());
         };
-        let parts = parts.map_err(|e| e.to_string())?;
+        let parts = parts?;
         for (key, pick) in [
             ("striker_strain_energy_over_rho_c1sq_Rsq", 0),
             ("striker_vibration_energy_over_rho_c1sq_Rsq", 1),
@@ -629,6 +690,15 @@ impl RunReport {
                 .iter()
                 .map(|p| if pick == 0 { &p.0 } else { &p.1 })
                 .collect();
+            if vals
+                .iter()
+                .any(|v| !v.value.is_finite() || v.error.is_some_and(|e| !e.is_finite()))
+            {
+                return Err(impact::ImpactError::Step {
+                    time: "the report".into(),
+                    reason: format!("{key} is not finite"),
+                });
+            }
             self.shell_energy.push(Column {
                 key,
                 values: vals.iter().map(|v| number(v.value, None)).collect(),
@@ -655,29 +725,13 @@ impl RunReport {
             ("law", json!(c.law.name())),
             ("striker", json!(c.striker.name())),
         ];
-        match &c.striker {
-            Striker::Rigid => {}
-            Striker::Elastic(mat) => out.push((
-                "striker_model",
-                json!({"c1_over_c1": mat.c1_ratio, "c2_over_c1": mat.c2_ratio, "density_ratio": mat.density_ratio,
-                       "model": "local half-plane", "valid_until_c1t_over_R": c.striker.validity_end()}),
-            )),
-            Striker::Shell(s) => out.push((
-                "striker_model",
-                json!({"thickness_over_R": s.thickness, "c1_over_c1": s.material.c1_ratio, "c2_over_c1": s.material.c2_ratio,
-                       "density_ratio": s.material.density_ratio, "mass_ratio": s.mass_ratio(),
-                       "model": "Timoshenko ring (membrane, bending, transverse shear, rotary inertia)"}),
-            )),
+        if let Some(m) = self.striker_model_json() {
+            out.push(("striker_model", m));
         }
         out.push(("profile", json!(c.profile.label())));
+        self.push_summary(&mut out, &["mass_ratio", "v0_over_c1"]);
         match &c.drive {
-            Drive::Free {
-                mass_ratio,
-                v0_over_c1,
-            } => {
-                out.push(("mass_ratio", json!(mass_ratio)));
-                out.push(("v0_over_c1", json!(v0_over_c1)));
-            }
+            Drive::Free { .. } => {}
             Drive::Speed(v) => out.push(("driven", json!({"V_over_c1": v}))),
             Drive::Table(t) => out.push(("driven", json!({"table_points": t.len()}))),
         }
@@ -704,47 +758,21 @@ impl RunReport {
         out.push(("c1t_over_R", numbers(&self.c1t_over_r)));
         out.push(("bdot_over_c1", numbers(&self.bdot_over_c1)));
         out.push(("stage", json!(self.stage)));
-        if let Some(p) = &self.peak {
-            let key = if p.turned_down {
-                "peak_force"
-            } else {
-                "largest_force"
-            };
-            out.push((key, self.peak_json(p)));
-        }
-        if let Some(r) = &self.rebound {
-            out.push((
+        self.push_summary(
+            &mut out,
+            &[
+                "peak_force",
+                "largest_force",
                 "separation_c1t_over_R",
-                json!({"value": r.separation_c1t_over_r.value.json(), "error_estimate": r.separation_c1t_over_r.error}),
-            ));
-            out.push(("restitution", r.restitution.value.json()));
-            out.push((
+                "restitution",
                 "rebound_speed_over_c1",
-                r.rebound_speed_over_c1.value.json(),
-            ));
-            out.push(("energy_to_half_plane", r.energy_to_half_plane.value.json()));
-            out.push(("reimpacts", json!(r.reimpacts)));
-        }
-        if let Some(a) = &self.energy_audit {
-            let mut audit = Map::new();
-            audit.insert("largest_defect".into(), json!(a.largest_defect));
-            audit.insert("bound".into(), json!(a.bound));
-            audit.insert("within_bound".into(), json!(a.within_bound));
-            if let Some(note) = a.note {
-                audit.insert("note".into(), json!(note));
-            }
-            out.push(("energy_audit", Value::Object(audit)));
-        }
-        let r = &self.resolution;
-        out.push((
-            "resolution",
-            json!({
-                "largest_contact_cells": r.largest_contact_cells,
-                "least_cells": r.least_cells,
-                "under_resolved": r.under_resolved,
-            }),
-        ));
-        out.push(("error_estimate", Value::Object(self.errors_json(false))));
+                "energy_to_half_plane",
+                "reimpacts",
+                "energy_audit",
+                "resolution",
+            ],
+        );
+        out.push(("error_estimate", Value::Object(self.errors_json())));
         let ords: Map<String, Value> = self
             .observed_order
             .iter()
@@ -797,6 +825,105 @@ impl RunReport {
         out
     }
 
+    /// The striker's model, for a deformable striker.
+    fn striker_model_json(&self) -> Option<Value> {
+        let c = &self.case;
+        match &c.striker {
+            Striker::Rigid => None,
+            Striker::Elastic(mat) => Some(
+                json!({"c1_over_c1": mat.c1_ratio, "c2_over_c1": mat.c2_ratio, "density_ratio": mat.density_ratio,
+                       "model": "local half-plane", "valid_until_c1t_over_R": c.striker.validity_end()}),
+            ),
+            Striker::Shell(s) => Some(
+                json!({"thickness_over_R": s.thickness, "c1_over_c1": s.material.c1_ratio, "c2_over_c1": s.material.c2_ratio,
+                       "density_ratio": s.material.density_ratio, "mass_ratio": s.mass_ratio(),
+                       "model": "Timoshenko ring (membrane, bending, transverse shear, rotary inertia)"}),
+            ),
+        }
+    }
+
+    /// A scalar result of the run ([`RUN_SUMMARY_KEYS`]) as JSON with its absolute estimate
+    /// where it has one, or `None` when the run does not have it.
+    fn summary(&self, key: &str) -> Option<(Value, Option<f64>)> {
+        let rebound = self.rebound.as_ref();
+        let peak = |down: bool| {
+            self.peak
+                .as_ref()
+                .filter(|p| p.turned_down == down)
+                .map(|p| (self.peak_json(p), None))
+        };
+        match key {
+            "mass_ratio" | "v0_over_c1" => match self.case.drive {
+                Drive::Free {
+                    mass_ratio,
+                    v0_over_c1,
+                } => Some((
+                    json!(if key == "mass_ratio" {
+                        mass_ratio
+                    } else {
+                        v0_over_c1
+                    }),
+                    None,
+                )),
+                _ => None,
+            },
+            "separation_c1t_over_R" => rebound.map(|r| {
+                let s = &r.separation_c1t_over_r;
+                (
+                    json!({"value": s.value.json(), "error_estimate": s.error}),
+                    None,
+                )
+            }),
+            "restitution" => rebound.map(|r| (r.restitution.value.json(), r.restitution.error)),
+            "rebound_speed_over_c1" => rebound.map(|r| {
+                (
+                    r.rebound_speed_over_c1.value.json(),
+                    r.rebound_speed_over_c1.error,
+                )
+            }),
+            "energy_to_half_plane" => rebound.map(|r| {
+                (
+                    r.energy_to_half_plane.value.json(),
+                    r.energy_to_half_plane.error,
+                )
+            }),
+            "reimpacts" => rebound.map(|r| (json!(r.reimpacts), None)),
+            "peak_force" => peak(true),
+            "largest_force" => peak(false),
+            "energy_audit" => self.energy_audit.as_ref().map(|a| {
+                let mut audit = Map::new();
+                audit.insert("largest_defect".into(), json!(a.largest_defect));
+                audit.insert("bound".into(), json!(a.bound));
+                audit.insert("within_bound".into(), json!(a.within_bound));
+                if let Some(note) = a.note {
+                    audit.insert("note".into(), json!(note));
+                }
+                (Value::Object(audit), None)
+            }),
+            "resolution" => {
+                let r = &self.resolution;
+                Some((
+                    json!({
+                        "largest_contact_cells": r.largest_contact_cells,
+                        "least_cells": r.least_cells,
+                        "under_resolved": r.under_resolved,
+                    }),
+                    None,
+                ))
+            }
+            _ => None,
+        }
+    }
+
+    /// Appends the summary entries of `keys` the run has.
+    fn push_summary(&self, out: &mut Vec<(&'static str, Value)>, keys: &[&'static str]) {
+        for k in keys {
+            if let Some((v, _)) = self.summary(k) {
+                out.push((k, v));
+            }
+        }
+    }
+
     fn grid_json(&self) -> Value {
         let g = &self.grid;
         json!({
@@ -813,14 +940,11 @@ impl RunReport {
     }
 
     /// The `error_estimate` object: per column an array, per rebound quantity a number
-    /// (`scalars_only` for the CSV header's lookups).
-    fn errors_json(&self, scalars_only: bool) -> Map<String, Value> {
+    fn errors_json(&self) -> Map<String, Value> {
         let mut errs = Map::new();
-        if !scalars_only {
-            for col in &self.columns {
-                if let Some(e) = &col.errors {
-                    errs.insert(col.key.into(), json!(e));
-                }
+        for col in &self.columns {
+            if let Some(e) = &col.errors {
+                errs.insert(col.key.into(), json!(e));
             }
         }
         if let Some(r) = &self.rebound {
@@ -834,11 +958,9 @@ impl RunReport {
                 }
             }
         }
-        if !scalars_only {
-            for col in &self.shell_energy {
-                if let Some(e) = &col.errors {
-                    errs.insert(col.key.into(), json!(e));
-                }
+        for col in &self.shell_energy {
+            if let Some(e) = &col.errors {
+                errs.insert(col.key.into(), json!(e));
             }
         }
         errs
@@ -862,12 +984,10 @@ impl RunReport {
         let mut s = String::new();
         s.push_str(&format!("# impact run {}\n", self.version));
         s.push_str(&format!("# command: {cmdline}\n"));
-        let entries = self.entries();
-        let get = |k: &str| entries.iter().find(|(key, _)| *key == k).map(|(_, v)| v);
         s.push_str(&format!(
             "# striker: {}{}; law: {}; profile: {}; poisson: {}; grid: {}\n",
             c.striker.name(),
-            get("striker_model")
+            self.striker_model_json()
                 .map(|m| format!(" {m}"))
                 .unwrap_or_default(),
             c.law.name(),
@@ -884,12 +1004,10 @@ impl RunReport {
                 EDGE_WITHOUT_SOLUTION
             ));
         }
-        let scalar_errors = self.errors_json(true);
         for key in RUN_SUMMARY_KEYS {
-            if let Some(x) = get(key) {
-                let err = scalar_errors
-                    .get(*key)
-                    .map(|e| format!(" (error estimate {e})"))
+            if let Some((x, e)) = self.summary(key) {
+                let err = e
+                    .map(|e| format!(" (error estimate {})", json!(e)))
                     .unwrap_or_default();
                 s.push_str(&format!("# {key}: {x}{err}\n"));
             }
@@ -996,11 +1114,18 @@ pub struct GreenValue {
 }
 
 impl GreenValue {
-    fn of<T: Real>(e: &Estimate<T>, digits: usize) -> Self {
-        GreenValue {
+    /// The value and its estimate, each finite (else the lamb crate's refusal, naming it).
+    fn of<T: Real>(e: &Estimate<T>, digits: usize) -> lamb::Result<Self> {
+        if !(e.value.is_finite() && e.error.is_finite()) {
+            return Err(lamb::LambError::NotFinite {
+                quantity: "a value of impact green or its estimate",
+                s: e.value.to_f64().to_string(),
+            });
+        }
+        Ok(GreenValue {
             text: e.value.to_decimal(digits),
             error: e.error,
-        }
+        })
     }
     fn error_json(&self) -> Value {
         num(&format!("{:.2e}", self.error.max(0.0)))
@@ -1069,12 +1194,12 @@ pub struct GreenReport {
     pub constants: Option<GreenConstants>,
 }
 
-fn triple<T: Real>(t: Triple<Estimate<T>>, digits: usize) -> [GreenValue; 3] {
-    [
-        GreenValue::of(&t.zz, digits),
-        GreenValue::of(&t.xz, digits),
-        GreenValue::of(&t.xx, digits),
-    ]
+fn triple<T: Real>(t: Triple<Estimate<T>>, digits: usize) -> lamb::Result<[GreenValue; 3]> {
+    Ok([
+        GreenValue::of(&t.zz, digits)?,
+        GreenValue::of(&t.xz, digits)?,
+        GreenValue::of(&t.xx, digits)?,
+    ])
 }
 
 impl GreenReport {
@@ -1097,8 +1222,8 @@ impl GreenReport {
                     .map(|s| {
                         Ok(GreenPoint {
                             s: s.to_decimal(digits),
-                            g: triple(hp.impulse(s)?, digits),
-                            w: triple(hp.step(s)?, digits),
+                            g: triple(hp.impulse(s)?, digits)?,
+                            w: triple(hp.step(s)?, digits)?,
                         })
                     })
                     .collect::<lamb::Result<Vec<_>>>()?,
@@ -1113,11 +1238,11 @@ impl GreenReport {
                         Ok(GreenCell {
                             sa: sa.to_decimal(digits),
                             sb: sb.to_decimal(digits),
-                            ix: triple(hp.cell(0, sa, sb)?, digits),
+                            ix: triple(hp.cell(0, sa, sb)?, digits)?,
                             it: if *sa == 0.0 {
                                 Err(IT_AT_ZERO.to_string())
                             } else {
-                                Ok(triple(hp.cell(1, sa, sb)?, digits))
+                                triple(hp.cell(1, sa, sb)?, digits).map(Ok)?
                             },
                         })
                     })

@@ -65,13 +65,40 @@ printed!(impact::RunReport, indented, csv);
 printed!(impact::GreenReport, indented, csv);
 printed!(impact::EdgeReport, indented, csv);
 
-/// A JSON number with exactly the digits given (arbitrary precision); null for text that is
-/// not a number.
+/// A JSON number with exactly the digits given (arbitrary precision), from decimal text in
+/// any form the inputs accept (`+86`, `.5`, `500.`, `086` are written `86`, `0.5`, `500.0`,
+/// `86`); null for text that is not a number.
 pub fn num(s: &str) -> Value {
-    match s.parse::<JsonNumber>() {
+    match json_decimal(s.trim()).parse::<JsonNumber>() {
         Ok(n) => Value::Number(n),
         Err(_) => Value::Null,
     }
+}
+
+/// Decimal text in JSON's number grammar: no leading `+`, a digit before and after the
+/// point, no leading zeros.
+fn json_decimal(s: &str) -> String {
+    let (sign, body) = match s.strip_prefix('-') {
+        Some(b) => ("-", b),
+        None => ("", s.strip_prefix('+').unwrap_or(s)),
+    };
+    let (mantissa, exponent) = match body.find(['e', 'E']) {
+        Some(k) => body.split_at(k),
+        None => (body, ""),
+    };
+    let (int, frac) = match mantissa.split_once('.') {
+        Some((i, f)) => (i, Some(f)),
+        None => (mantissa, None),
+    };
+    let int = int.trim_start_matches('0');
+    let int = if int.is_empty() { "0" } else { int };
+    let frac = match frac {
+        Some("") => ".0".to_string(),
+        Some(f) => format!(".{f}"),
+        None => String::new(),
+    };
+    let exponent = exponent.replacen("e+", "e", 1).replacen("E+", "E", 1);
+    format!("{sign}{int}{frac}{exponent}")
 }
 
 /// An f64 (an error estimate) as a JSON number in scientific notation.

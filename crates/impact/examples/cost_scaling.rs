@@ -6,7 +6,7 @@
 //! - the reference case (free rigid cylinder, m0/(rho R^2) = 10, V0/c1 = 0.01, to
 //!   c1 t/R = 10) for several dx (N_t and N_x both grow like 1/dx).
 //!
-//! `cargo run --release -p impact --example cost_scaling`
+//! `cargo run --release -p impact --features examples --example cost_scaling`
 use std::time::Instant;
 
 use impact::{Drive, EdgeLaw, ImpactCase, Profile};

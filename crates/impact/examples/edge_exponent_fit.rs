@@ -12,7 +12,7 @@
 //! s^lambda (c_0 + c_1 s + c_2 s^2 + c_3 s^3) over two decades of s
 //! (`impact::edge_fit::fit_self_similar_edge`; b = R at the end).
 //!
-//! `cargo run --release -p impact --example edge_exponent_fit -- [cells [case]]` (b at the end
+//! `cargo run --release -p impact --features examples --example edge_exponent_fit -- [cells [case]]` (b at the end
 //! in cells, default 800; one case of the list by its index).
 use impact::edge_fit::{fit_self_similar_edge, EdgeExponentCheck};
 use impact::{Drive, EdgeLaw, ImpactCase, Profile};

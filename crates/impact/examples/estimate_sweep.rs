@@ -7,7 +7,7 @@
 //! estimate keeps it below 1), its median (how pessimistic) and the median stated error
 //! relative to the value.
 //!
-//! `cargo run --release -p impact --example estimate_sweep -- [dx]` (default R/100).
+//! `cargo run --release -p impact --features examples --example estimate_sweep -- [dx]` (default R/100).
 use impact::{Drive, EdgeLaw, ImpactCase, Profile};
 
 fn main() {

@@ -1,6 +1,6 @@
 //! Single-grid histories of the reference case (`impact::REFERENCE`, Signorini law) on a
 //! sequence of grids, printed at a few times, for the convergence study of `docs/impact.md`
-//! (section 5): `cargo run --release -p impact --example grid_study -- KAPPA DX1 DX2 ...`.
+//! (section 5): `cargo run --release -p impact --features examples --example grid_study -- KAPPA DX1 DX2 ...`.
 use impact::{EdgeLaw, ImpactCase};
 
 fn main() {

@@ -1,6 +1,6 @@
 //! The reference case of the benchmark (free rigid cylinder, parabolic profile,
 //! m0/(rho R^2) = 10, V0/c1 = 0.01, c2/c1 = 1000/1870.83, to c1 t/R = 10): prints the history
-//! at a few times with error estimates. `cargo run --release -p impact --example reference_case -- DX KAPPA`.
+//! at a few times with error estimates. `cargo run --release -p impact --features examples --example reference_case -- DX KAPPA`.
 use impact::{EdgeLaw, ImpactCase};
 
 fn main() {

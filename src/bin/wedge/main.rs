@@ -212,11 +212,11 @@ fn input(case: &CaseArgs, digits: Option<u32>, defaults: Defaults) -> Result<Cas
         Indenter::new(theta, Param::parse("gamma", &case.gamma)?, coupling)?
     };
     if let Some(d) = digits {
-        if d == 0 || d > 2000 {
+        if d == 0 || d > dyncontact::MAX_DIGITS {
             return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
                 name: "digits",
                 value: d.to_string(),
-                range: "1 ..= 2000".into(),
+                range: format!("1 ..= {}", dyncontact::MAX_DIGITS),
             }));
         }
     }
@@ -355,8 +355,8 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let inp = input(&case, digits, Defaults::ByFriction)?;
             let sel = select.selection()?;
-            let (lo, hi, n) = parse_range("alpha-range", &alpha_range)?;
-            check_spacing("alpha-range", &alpha_range, &lo, &hi, n)?;
+            let (lo, hi, n) = parse_range("alpha_range", &alpha_range)?;
+            check_spacing("alpha_range", &alpha_range, &lo, &hi, n)?;
             // the bits the rows are computed with (double-double up to 30 digits)
             let bits = if inp.uses_double_double() {
                 inp.precision()?
@@ -367,7 +367,7 @@ fn run(cli: Cli) -> Result<()> {
             };
             if n > CURVE_CAP && !force {
                 return Err(WedgeError::InvalidParameter(complexfn::InvalidParameter {
-                    name: "alpha-range steps",
+                    name: "alpha_range steps",
                     value: n.to_string(),
                     range: format!("1 ..= {CURVE_CAP} (or add --force)"),
                 }));
