@@ -369,10 +369,13 @@ fn half_plane<T: CachedRules>(a: &GreenInput, bits: u32) -> R<HalfPlane<T>> {
             Ok(HalfPlane::new(c2 / &c1)?)
         }
         (c1, c2, nu) => {
-            // the same refusals as a run's material
+            // the same refusals as a run's material: every other combination is one
             let some = |x: &Option<String>| x.as_ref().map(|_| 1.0);
-            spec::poisson(some(c1), some(c2), some(nu))?;
-            unreachable!("the material flags were refused above")
+            Err(match spec::poisson(some(c1), some(c2), some(nu)) {
+                Err(e) => e,
+                Ok(_) => InputError::new("poisson", "give --poisson, or --c1 and --c2 (m/s)"),
+            }
+            .into())
         }
     }
 }
