@@ -7,6 +7,8 @@
 // `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use std::ops::ControlFlow;
+
 use complexfn::quadrature::CachedRules;
 use complexfn::{Dd, Precision, Real};
 use impact::{EdgeLaw, ImpactCase, Stop};
@@ -199,12 +201,17 @@ impl RunInput {
 }
 
 /// Runs the impact of `input`, calling `progress` as the march goes on, and reports it.
+/// When `progress` answers [`ControlFlow::Break`] the march stops and the call ends with
+/// [`impact::ImpactError::Stopped`] (an interrupt).
 ///
 /// Refused before any work: a bad input (naming it), `digits` outside 1 to [`RUN_MAX_DIGITS`], a
 /// pressure time outside the run, and a run whose estimated memory exceeds
 /// `memory_limit_gib` without `force` (to the separation, the march checks the width the
 /// contact reaches as it goes).
-pub fn run(input: &RunInput, progress: impl FnMut(impact::Progress)) -> R<RunReport> {
+pub fn run(
+    input: &RunInput,
+    progress: impl FnMut(impact::Progress) -> ControlFlow<()>,
+) -> R<RunReport> {
     let mut c = input.case()?;
     c.validate()?;
     if !(input.memory_limit_gib.is_finite() && input.memory_limit_gib > 0.0) {

@@ -26,6 +26,13 @@ pub enum ImpactError {
         /// Why.
         reason: String,
     },
+    /// The caller stopped the march ([`crate::ImpactCase::solve_reporting`]'s report
+    /// answered [`std::ops::ControlFlow::Break`]): no result, by request.
+    #[error("stopped at c1 t/R = {time} on request")]
+    Stopped {
+        /// The time c1 t/R the march had reached.
+        time: f64,
+    },
     /// An error of the half-plane's response (Lamb crate).
     #[error(transparent)]
     Lamb(#[from] lamb::LambError),

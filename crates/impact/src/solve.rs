@@ -2,6 +2,8 @@
 //! ... times coarser) sharing their time levels, the stiffness check of a free striker, and
 //! the progress reported on the way (`docs/impact.md`, section 5).
 
+use std::ops::ControlFlow;
+
 use complexfn::quadrature::CachedRules;
 use lamb::HalfPlane;
 
@@ -74,14 +76,18 @@ impl ImpactCase {
         &self,
         mut progress: impl FnMut(f64),
     ) -> Result<SolvedImpact<T>> {
-        self.solve_reporting::<T>(|p| progress(p.fraction))
+        self.solve_reporting::<T>(|p| {
+            progress(p.fraction);
+            ControlFlow::Continue(())
+        })
     }
 
     /// Solves the case as [`ImpactCase::solve_at`], reporting every 64 steps where the march
-    /// stands ([`Progress`]).
+    /// stands ([`Progress`]). When `report` answers [`ControlFlow::Break`], the march stops
+    /// there and the solve ends with [`ImpactError::Stopped`] (a caller's interrupt).
     pub fn solve_reporting<T: Scalar + CachedRules>(
         &self,
-        mut report: impl FnMut(Progress),
+        mut report: impl FnMut(Progress) -> ControlFlow<()>,
     ) -> Result<SolvedImpact<T>> {
         self.validate()?;
         let extended = T::BITS > 53;
@@ -242,12 +248,17 @@ impl ImpactCase {
                 n += 1;
                 if n % 64 == 0 {
                     let frac = n as f64 / goal.unwrap_or(cap_steps).max(1) as f64;
-                    report(Progress {
+                    let answer = report(Progress {
                         fraction: done + weight * frac.min(1.0),
                         level,
                         step: n,
                         t: march.time(n).to_f64(),
                     });
+                    if answer.is_break() {
+                        return Err(ImpactError::Stopped {
+                            time: march.time(n).to_f64(),
+                        });
+                    }
                 }
             }
             done += weight;
@@ -274,7 +285,7 @@ impl ImpactCase {
         }
         let runs: Vec<Run<T>> = runs.into_iter().flatten().collect();
         self.check_stiffness(&runs[0])?;
-        report(Progress {
+        let _ = report(Progress {
             fraction: 1.0,
             level: 0,
             step: runs.first().map_or(0, |r| r.steps.len()),

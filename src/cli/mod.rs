@@ -2,6 +2,9 @@
 //! group, one-line usage errors that name every missing or bad flag, numbers in messages
 //! shortened to a readable width, and output that ends quietly when its reader has gone.
 
+pub mod impact;
+pub mod wedge;
+
 use std::io::Write;
 use std::process::ExitCode;
 

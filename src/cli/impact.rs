@@ -1,0 +1,220 @@
+//! The `impact` program's flags: the subcommands `run`, `green` and `edge` parsed by clap,
+//! each turned into the inputs of its library call ([`crate::impact_api`]). The binary
+//! prints the reports; other front ends (the Python package) parse the same flags.
+
+use clap::{Args, Parser, Subcommand};
+
+use super::MaterialArgs;
+use crate::error::InputError;
+use crate::impact_api::{EdgeInput, GreenInput, RunInput};
+
+/// The transient impact of strikers on an elastic half-plane (plane strain, the impact
+/// paper): rigid, elastic and thin-shell strikers over a whole impact to their rebound,
+/// Lamb's surface influence functions, and the pressure at a moving contact edge.
+#[derive(Parser, Debug)]
+#[command(name = "impact", version, arg_required_else_help = true)]
+pub struct ImpactCli {
+    /// The subcommand.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The impact program's subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Lamb's surface influence functions g(s), step responses W(s), cell integrals and the
+    /// Rayleigh constants of the half-plane.
+    Green(GreenArgs),
+    /// The transient impact of a striker on the half-plane, rigid, elastic (the local
+    /// half-plane model) or a thin cylindrical shell, free or driven: histories of the
+    /// penetration, the contact half-width, the force, energies and pressure profiles, the
+    /// rebound, each with an error estimate from grid refinement.
+    Run(RunArgs),
+    /// The power law p ~ d^lambda of the contact pressure at a contact edge moving at speed
+    /// D, for each speed range and edge law (docs/edge.md).
+    Edge(EdgeArgs),
+}
+
+/// Arguments of `impact green`.
+#[derive(Args, Debug)]
+pub struct GreenArgs {
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// Comma-separated points s = |x|/(c1 t) > 0 (not s_R) for pointwise values.
+    #[arg(long, allow_hyphen_values = true)]
+    at: Option<String>,
+    /// Comma-separated cells sa:sb with 0 <= sa <= sb (for sa = 0, It diverges and is reported
+    /// unavailable with the reason).
+    #[arg(long, allow_hyphen_values = true)]
+    cells: Option<String>,
+    /// Print the Rayleigh constants s_R, r_zz, r_xx, K_R.
+    #[arg(long)]
+    constants: bool,
+    /// Significant decimal digits (arbitrary precision); omit for f64.
+    #[arg(long)]
+    digits: Option<u32>,
+    /// JSON output (default: CSV with a `#` header).
+    #[arg(long)]
+    json: bool,
+}
+
+/// Arguments of `impact run`.
+#[derive(Args, Debug)]
+pub struct RunArgs {
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// The striker: `rigid`; `elastic:c1=..,c2=..,density_ratio=..` (its wave speeds in m/s,
+    /// its density over the half-plane's; local half-plane model, valid until c1 t/R =
+    /// 2 c1/c1s); `shell:thickness_over_R=..,c1=..,c2=..,density_ratio=..` (a thin
+    /// cylindrical shell of radius R, its mass from its geometry). Deformable strikers need
+    /// the half-plane's --c1 and --c2.
+    #[arg(long, default_value = "rigid")]
+    striker: String,
+    /// The profile: circle:R=.., parabola:R=.., power:A=..,k=.., wedge:theta_deg=..,
+    /// flat:a=.., table:FILE (two columns x f in metres, from x = 0).
+    #[arg(long)]
+    profile: Option<String>,
+    /// m0/(rho R^2), the striker's mass per unit length (free striker; a shell's follows
+    /// from its geometry).
+    #[arg(long, allow_hyphen_values = true)]
+    mass_ratio: Option<f64>,
+    /// V0/c1, the initial speed (free striker).
+    #[arg(long, allow_hyphen_values = true)]
+    v0_over_c1: Option<f64>,
+    /// Prescribed penetration instead of the equation of motion: speed:V_over_c1=.. or
+    /// table:FILE (two columns c1 t/R, h/R from (0, 0)).
+    #[arg(long)]
+    driven: Option<String>,
+    /// The edge law: signorini (unilateral conditions) or kinematic (eq (4), f(b) = h).
+    #[arg(long, default_value = "signorini")]
+    law: String,
+    /// End time: c1t/R=VALUE (the last reported time exactly), or `separation` (shortly
+    /// after the free striker leaves the surface; at most c1 t/R = 400) or
+    /// `separation:max=VALUE` (at most c1 t/R = VALUE).
+    #[arg(long)]
+    end: Option<String>,
+    /// The length scale R in metres for the flat punch, the wedge and the power law (the
+    /// radius for the circle and the parabola).
+    #[arg(long, allow_hyphen_values = true)]
+    length: Option<f64>,
+    /// Cell width dx/R of the finest grid.
+    #[arg(long, default_value_t = 0.005, allow_hyphen_values = true)]
+    dx: f64,
+    /// kappa = c1 dt/dx, in [0.5, 64].
+    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
+    kappa: f64,
+    /// Refinement levels for the error estimates (1 to 4).
+    #[arg(long, default_value_t = 3)]
+    levels: usize,
+    /// The edge cell: `model` (the local behaviour of the pressure at a moving edge, the
+    /// edge inside its cell) or `whole` (whole cells, the edge captured cell by cell), for
+    /// comparing the two.
+    #[arg(long, default_value = "model")]
+    edge_cell: String,
+    /// Pressure profiles at these times: c1t/R=T1,T2,...
+    #[arg(long)]
+    pressure_at: Option<String>,
+    /// JSON output (default: CSV with `#` headers).
+    #[arg(long)]
+    json: bool,
+    /// Significant digits of the reported values (1 to 30): the march in double-double,
+    /// the discrete solution of the same grids to that many digits (regression data for the
+    /// scheme; the error estimates stay those of the discretisation). Rigid strikers; the
+    /// inputs are taken as their nearest doubles. Omit for f64.
+    #[arg(long)]
+    digits: Option<u32>,
+    /// Run even when the estimated memory exceeds the limit (4 GiB by default, or
+    /// --memory-limit-gib).
+    #[arg(long)]
+    force: bool,
+    /// The memory limit in GiB above which a run is refused without --force.
+    #[arg(long, default_value_t = impact::cost::DEFAULT_MEMORY_LIMIT_GIB)]
+    memory_limit_gib: f64,
+}
+
+/// Arguments of `impact edge`.
+#[derive(Args, Debug)]
+pub struct EdgeArgs {
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// Comma-separated edge speeds D/c1 > 0 (not c_R/c1, c2/c1 or 1).
+    #[arg(long, allow_hyphen_values = true)]
+    speed_over_c1: Option<String>,
+    /// The edge law: `signorini` (a free edge) or `kinematic` (a prescribed edge, f(b) = h).
+    #[arg(long, default_value = "signorini")]
+    law: String,
+    /// JSON output (default: CSV with `#` header lines).
+    #[arg(long)]
+    json: bool,
+}
+
+impl GreenArgs {
+    /// Whether JSON was asked for (`--json`) instead of CSV.
+    pub fn json(&self) -> bool {
+        self.json
+    }
+    /// The inputs of [`crate::impact_api::green`].
+    pub fn input(&self) -> GreenInput {
+        GreenInput {
+            c1: self.material.c1.clone(),
+            c2: self.material.c2.clone(),
+            poisson: self.material.poisson.clone(),
+            at: self.at.clone(),
+            cells: self.cells.clone(),
+            constants: self.constants,
+            digits: self.digits,
+        }
+    }
+}
+
+impl RunArgs {
+    /// Whether JSON was asked for (`--json`) instead of CSV.
+    pub fn json(&self) -> bool {
+        self.json
+    }
+    /// The inputs of [`crate::impact_api::run`] (a material flag that is not a finite
+    /// number refused, naming it).
+    pub fn input(&self) -> Result<RunInput, InputError> {
+        let (c1, c2, poisson) = self.material.numbers()?;
+        Ok(RunInput {
+            c1,
+            c2,
+            poisson,
+            striker: self.striker.clone(),
+            profile: self.profile.clone().unwrap_or_default(),
+            mass_ratio: self.mass_ratio,
+            v0_over_c1: self.v0_over_c1,
+            driven: self.driven.clone(),
+            law: self.law.clone(),
+            end: self.end.clone().unwrap_or_default(),
+            length: self.length,
+            dx: self.dx,
+            kappa: self.kappa,
+            levels: self.levels,
+            edge_cell: self.edge_cell.clone(),
+            pressure_at: self.pressure_at.clone(),
+            digits: self.digits,
+            force: self.force,
+            memory_limit_gib: self.memory_limit_gib,
+        })
+    }
+}
+
+impl EdgeArgs {
+    /// Whether JSON was asked for (`--json`) instead of CSV.
+    pub fn json(&self) -> bool {
+        self.json
+    }
+    /// The inputs of [`crate::impact_api::edge`] (a material flag that is not a finite
+    /// number refused, naming it).
+    pub fn input(&self) -> Result<EdgeInput, InputError> {
+        let (c1, c2, poisson) = self.material.numbers()?;
+        Ok(EdgeInput {
+            c1,
+            c2,
+            poisson,
+            speed_over_c1: self.speed_over_c1.clone(),
+            law: self.law.clone(),
+        })
+    }
+}
