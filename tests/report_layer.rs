@@ -58,7 +58,7 @@ fn run_report_round_trips() {
         }),
         run_input(|r| r.digits = Some(25)),
     ] {
-        let report = impact_api::run(&input, |_| {}).unwrap();
+        let report = impact_api::run(&input, |_| std::ops::ControlFlow::Continue(())).unwrap();
         let text = serde_json::to_string_pretty(&report.to_json()).unwrap();
         let back: Value = serde_json::from_str(&text).unwrap();
         assert!(in_order(&keys_of(&back), RUN_KEYS), "{:?}", keys_of(&back));
@@ -266,7 +266,7 @@ fn stated_ranges_are_the_enforced_ranges() {
         input.end = "c1t/R=1".into();
         input.dx = 0.02;
         f(&mut input);
-        impact_api::run(&input, |_| {})
+        impact_api::run(&input, |_| std::ops::ControlFlow::Continue(()))
             .map(|_| ())
             .map_err(|e| e.to_string())
     };
@@ -309,7 +309,7 @@ fn bad_inputs_name_their_flag() {
     let run = |f: &dyn Fn(&mut RunInput)| {
         let mut input = run_input(|_| {});
         f(&mut input);
-        impact_api::run(&input, |_| {})
+        impact_api::run(&input, |_| std::ops::ControlFlow::Continue(()))
             .err()
             .and_then(|e| e.parameter())
     };
