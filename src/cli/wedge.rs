@@ -404,24 +404,28 @@ pub struct CurvePlan {
 
 impl CurvePlan {
     /// Computes the rows in order, [`CURVE_CHUNK`] at a time in parallel (rayon), handing
-    /// each chunk to `rows` as soon as it is done, after `tick` once per row. When `rows`
-    /// answers [`ControlFlow::Break`] no further row is computed, and the call returns
-    /// `Ok(false)`; `Ok(true)` when every row was handed on. A row that fails ends the
-    /// curve with its error, after the rows before it were handed on.
+    /// each chunk to `rows` as soon as it is done. `before_row` is asked before each row is
+    /// computed. When either answers [`ControlFlow::Break`], no further row is computed and
+    /// the call returns `Ok(false)` (a chunk stopped part-way is not handed on); `Ok(true)`
+    /// when every row was handed on. A row that fails ends the curve with its error, after
+    /// the rows before it were handed on.
     pub fn rows(
         &self,
-        tick: impl Fn() + Sync,
+        before_row: impl Fn() -> ControlFlow<()> + Sync,
         mut rows: impl FnMut(Vec<SolveReport>) -> ControlFlow<()>,
     ) -> Result<bool> {
         for chunk in self.alphas.chunks(CURVE_CHUNK) {
-            let done: Vec<Result<SolveReport>> = chunk
+            let done: Vec<Option<Result<SolveReport>>> = chunk
                 .par_iter()
                 .map(|a| {
-                    let r = crate::curve_row(&self.input, a, &self.selection);
-                    tick();
-                    r
+                    before_row()
+                        .is_continue()
+                        .then(|| crate::curve_row(&self.input, a, &self.selection))
                 })
                 .collect();
+            let Some(done) = done.into_iter().collect::<Option<Vec<_>>>() else {
+                return Ok(false);
+            };
             let mut ok = Vec::with_capacity(done.len());
             let mut failed = None;
             for r in done {

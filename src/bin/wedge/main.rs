@@ -39,7 +39,10 @@ fn curve(args: &CurveArgs) -> Result<()> {
     }
     let mut first = true;
     let done = plan.rows(
-        || bar.inc(1),
+        || {
+            bar.inc(1);
+            ControlFlow::Continue(())
+        },
         |rows| {
             for r in rows {
                 if json {

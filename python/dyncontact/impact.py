@@ -1,0 +1,97 @@
+"""The transient impact of rigid, elastic and thin-shell strikers on an elastic half-plane
+(plane strain, the impact paper): the ``impact`` command line as Python calls.
+
+Conventions (as ``impact --help``): the half-plane's ``c1``, ``c2`` in m/s or its
+``poisson``; lengths over the striker's scale R, times as c1 t/R, speeds over c1, the force
+over rho c1^2 R, energies over rho c1^2 R^2, pressures over rho c1^2. ``striker``:
+``"rigid"``, ``"elastic:c1=..,c2=..,density_ratio=.."`` or
+``"shell:thickness_over_R=..,c1=..,c2=..,density_ratio=.."``; ``profile``:
+``"circle:R=.."``, ``"parabola:R=.."``, ``"power:A=..,k=.."``, ``"wedge:theta_deg=.."``,
+``"flat:a=.."`` or ``"table:FILE"``; ``law``: ``"signorini"`` or ``"kinematic"``.
+``end`` is a time c1 t/R (a number), ``"separation"`` or ``"separation:max=VALUE"``.
+Every history comes with its error estimate from grid refinement.
+"""
+
+from __future__ import annotations
+
+import numbers
+from typing import Any, Optional, Sequence, Union
+
+from . import _args, _dyncontact, _progress
+from ._result import Report, RunResult
+from ._types import Number
+
+__all__ = ["run", "edge", "RunResult", "EdgeResult"]
+
+
+class EdgeResult(Report):
+    """``impact.edge``: ``records``, one per edge speed, with the exponents lambda of
+    p ~ d^lambda, the selected one, and the gap coefficients (docs/edge.md)."""
+
+
+def _time(parameter: str, value: Any) -> Any:
+    """A time c1 t/R given as a number is the flag's ``c1t/R=VALUE``."""
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        return "c1t/R=" + _args.text(parameter, value)
+    return value
+
+
+def run(
+    *,
+    profile: str,
+    striker: str = "rigid",
+    mass_ratio: Optional[float] = None,
+    v0_over_c1: Optional[float] = None,
+    driven: Optional[str] = None,
+    law: Optional[str] = None,
+    end: Union[Number, str, None] = None,
+    c1: Optional[Number] = None,
+    c2: Optional[Number] = None,
+    poisson: Optional[Number] = None,
+    length: Optional[float] = None,
+    dx: Optional[float] = None,
+    kappa: Optional[float] = None,
+    levels: Optional[int] = None,
+    edge_cell: Optional[str] = None,
+    pressure_at: Union[str, Sequence[Number], None] = None,
+    digits: Optional[int] = None,
+    force: bool = False,
+    memory_limit_gib: Optional[float] = None,
+    progress: _progress.Progress = False,
+) -> RunResult:
+    """Marches an impact (``impact run``): a free striker (``mass_ratio`` = m0/(rho R^2),
+    ``v0_over_c1``) or a prescribed penetration (``driven``), to ``end``. Returns float64
+    arrays over ``c1t_over_R`` (``h_over_R``, ``b_over_R``, ``force_over_rho_c1sq_R``, ...)
+    with ``error_estimate[key]`` of the same shape, the rebound, the energy audit and the
+    pressure profiles at ``pressure_at`` (times c1 t/R) as 2-D arrays.
+
+    ``progress=True`` shows a tqdm bar, a callable receives the fraction done; Ctrl-C
+    (KeyboardInterrupt) stops the march within a second. The GIL is released meanwhile.
+    """
+    if pressure_at is not None and not isinstance(pressure_at, str):
+        pressure_at = "c1t/R=" + _args.listed("pressure_at", pressure_at)
+    kw = dict(c1=c1, c2=c2, poisson=poisson, striker=striker, profile=profile,
+              mass_ratio=mass_ratio, v0_over_c1=v0_over_c1, driven=driven, law=law,
+              end=_time("end", end), length=length, dx=dx, kappa=kappa, levels=levels,
+              edge_cell=edge_cell, pressure_at=pressure_at, digits=digits, force=force,
+              memory_limit_gib=memory_limit_gib)
+    cb = _progress.callback(progress, "impact")
+    try:
+        text = _dyncontact.impact(_args.argv("run", kw), cb)
+    finally:
+        _progress.close(cb)
+    return RunResult(text, _args.decimal_digits(digits))
+
+
+def edge(
+    *,
+    speed_over_c1: Union[str, Sequence[Number], Number],
+    law: Optional[str] = None,
+    c1: Optional[Number] = None,
+    c2: Optional[Number] = None,
+    poisson: Optional[Number] = None,
+) -> EdgeResult:
+    """The power law p ~ d^lambda of the contact pressure at an edge moving at the speeds
+    D/c1 of ``speed_over_c1`` (``impact edge``), for the edge ``law``."""
+    kw = dict(c1=c1, c2=c2, poisson=poisson, speed_over_c1=speed_over_c1, law=law)
+    return EdgeResult(_dyncontact.impact(_args.argv("edge", kw, lists=("speed_over_c1",))))
