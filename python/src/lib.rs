@@ -103,7 +103,12 @@ fn keyword_names(message: &str) -> String {
 }
 
 fn invalid(py: Python<'_>, parameter: &str, message: &str) -> PyErr {
-    let err = InvalidParameterError::new_err(keyword_names(&shorten_numbers(message)));
+    let mut message = keyword_names(&shorten_numbers(message));
+    if !parameter.is_empty() && !message.contains(parameter) {
+        // the engines name some inputs in words ("V0/c1"): the keyword comes first
+        message = format!("{parameter}: {message}");
+    }
+    let err = InvalidParameterError::new_err(message);
     let _ = err.value(py).setattr("parameter", parameter);
     err
 }
@@ -144,60 +149,77 @@ fn to_py(py: Python<'_>, e: Error) -> PyErr {
     }
 }
 
+/// How long an interrupted call waits for its worker to stop before it returns: a worker
+/// inside one long step (a curve's row at hundreds of digits) finishes that step in the
+/// background, and its result is dropped.
+const GRACE: Duration = Duration::from_millis(300);
+
 /// Runs `work` on a worker thread (in the engine's pool) with the GIL released, while the
 /// calling thread passes the fraction done to `progress` and checks for signals every
 /// [`POLL`]; a signal's exception (KeyboardInterrupt) or the callable's own asks the worker
-/// to stop and is raised once it has.
-fn supervised<R: Send>(
+/// to stop and is raised once it has, or after [`GRACE`].
+fn supervised<R: Send + 'static>(
     py: Python<'_>,
     progress: Option<Py<PyAny>>,
-    work: impl FnOnce(&Control) -> R + Send,
+    work: impl FnOnce(&Control) -> R + Send + 'static,
 ) -> PyResult<R> {
-    let control = Control::new();
+    let control = Arc::new(Control::new());
     let pool = pool();
     let mut raised: Option<PyErr> = None;
-    let outcome = py.detach(|| {
-        let caller = std::thread::current();
-        std::thread::scope(|s| {
-            let worker = s.spawn(|| {
-                let r = match &pool {
-                    Some(p) => p.install(|| work(&control)),
-                    None => work(&control),
-                };
-                caller.unpark();
-                r
-            });
-            let mut shown = f64::NAN;
-            while !worker.is_finished() {
-                std::thread::park_timeout(POLL);
-                if worker.is_finished() {
-                    break;
-                }
-                Python::attach(|py| {
-                    if raised.is_none() {
-                        if let Err(e) = py.check_signals() {
-                            raised = Some(e);
-                            control.stop.store(true, Ordering::Relaxed);
-                            return;
-                        }
-                    }
-                    let f = control.fraction();
-                    if let (Some(cb), None, false) = (&progress, &raised, f == shown) {
-                        shown = f;
-                        if let Err(e) = cb.call1(py, (f,)) {
-                            raised = Some(e);
-                            control.stop.store(true, Ordering::Relaxed);
-                        }
-                    }
-                });
-            }
-            worker.join()
+    let caller = std::thread::current();
+    let worker = {
+        let control = Arc::clone(&control);
+        std::thread::spawn(move || {
+            let r = match &pool {
+                Some(p) => p.install(|| work(&control)),
+                None => work(&control),
+            };
+            caller.unpark();
+            r
         })
+    };
+    let finished = py.detach(|| {
+        let mut shown = f64::NAN;
+        let mut stopped_at = None;
+        loop {
+            std::thread::park_timeout(POLL);
+            if worker.is_finished() {
+                return true;
+            }
+            if let Some(t) = stopped_at {
+                if std::time::Instant::now().duration_since(t) > GRACE {
+                    return false;
+                }
+                continue;
+            }
+            Python::attach(|py| {
+                let mut stop = |e: PyErr| {
+                    raised = Some(e);
+                    control.stop.store(true, Ordering::Relaxed);
+                    stopped_at = Some(std::time::Instant::now());
+                };
+                if let Err(e) = py.check_signals() {
+                    stop(e);
+                    return;
+                }
+                let f = control.fraction();
+                if let (Some(cb), false) = (&progress, f == shown) {
+                    shown = f;
+                    if let Err(e) = cb.call1(py, (f,)) {
+                        stop(e);
+                    }
+                }
+            });
+        }
     });
     if let Some(e) = raised {
+        // a worker still inside its step ends on its own; its result is dropped
+        if finished {
+            let _ = worker.join();
+        }
         return Err(e);
     }
-    let r = outcome.map_err(|panic| {
+    let r = worker.join().map_err(|panic| {
         let what = panic
             .downcast_ref::<String>()
             .cloned()
@@ -218,7 +240,7 @@ fn supervised<R: Send>(
 fn wedge_call(py: Python<'_>, argv: Vec<String>, progress: Option<Py<PyAny>>) -> PyResult<String> {
     let cli = WedgeCli::try_parse_from(std::iter::once("wedge".to_string()).chain(argv))
         .map_err(|e| usage(py, "wedge", &e))?;
-    let done = supervised(py, progress, |control| -> Result<String, Error> {
+    let done = supervised(py, progress, move |control| -> Result<String, Error> {
         Ok(match cli.command {
             WedgeCommand::Solve(a) => a.report()?.json_text(),
             WedgeCommand::Stress(a) => a.report()?.json_text(),
@@ -249,7 +271,7 @@ fn wedge_call(py: Python<'_>, argv: Vec<String>, progress: Option<Py<PyAny>>) ->
 fn impact_call(py: Python<'_>, argv: Vec<String>, progress: Option<Py<PyAny>>) -> PyResult<String> {
     let cli = ImpactCli::try_parse_from(std::iter::once("impact".to_string()).chain(argv))
         .map_err(|e| usage(py, "impact", &e))?;
-    let done = supervised(py, progress, |control| -> Result<String, Error> {
+    let done = supervised(py, progress, move |control| -> Result<String, Error> {
         Ok(match cli.command {
             ImpactCommand::Run(a) => impact_api::run(&a.input()?, |p| {
                 control.set_fraction(p.fraction);
@@ -293,7 +315,10 @@ fn get_num_threads() -> usize {
 /// The extension module.
 #[pymodule]
 fn _dyncontact(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add("InvalidParameterError", m.py().get_type::<InvalidParameterError>())?;
+    m.add(
+        "InvalidParameterError",
+        m.py().get_type::<InvalidParameterError>(),
+    )?;
     m.add("NumericalError", m.py().get_type::<NumericalError>())?;
     m.add("VERSION", dyncontact::VERSION)?;
     m.add("RUN_MAX_DIGITS", impact_api::RUN_MAX_DIGITS)?;

@@ -1,0 +1,3 @@
+from decimal import Decimal
+
+Number = int | float | Decimal | str
