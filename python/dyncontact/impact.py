@@ -68,13 +68,11 @@ def run(
     ``progress=True`` shows a tqdm bar, a callable receives the fraction done; Ctrl-C
     (KeyboardInterrupt) stops the march within a second. The GIL is released meanwhile.
     """
+    kw = dict(locals())  # the keyword arguments, in the signature's order
+    del kw["progress"]
+    kw["end"] = _time("end", end)
     if pressure_at is not None and not isinstance(pressure_at, str):
-        pressure_at = "c1t/R=" + _args.listed("pressure_at", pressure_at)
-    kw = dict(c1=c1, c2=c2, poisson=poisson, striker=striker, profile=profile,
-              mass_ratio=mass_ratio, v0_over_c1=v0_over_c1, driven=driven, law=law,
-              end=_time("end", end), length=length, dx=dx, kappa=kappa, levels=levels,
-              edge_cell=edge_cell, pressure_at=pressure_at, digits=digits, force=force,
-              memory_limit_gib=memory_limit_gib)
+        kw["pressure_at"] = "c1t/R=" + _args.listed("pressure_at", pressure_at)
     cb = _progress.callback(progress, "impact")
     try:
         text = _dyncontact.impact(_args.argv("run", kw), cb)
@@ -93,5 +91,5 @@ def edge(
 ) -> EdgeResult:
     """The power law p ~ d^lambda of the contact pressure at an edge moving at the speeds
     D/c1 of ``speed_over_c1`` (``impact edge``), for the edge ``law``."""
-    kw = dict(c1=c1, c2=c2, poisson=poisson, speed_over_c1=speed_over_c1, law=law)
+    kw = dict(locals())  # the keyword arguments, in the signature's order
     return EdgeResult(_dyncontact.impact(_args.argv("edge", kw, lists=("speed_over_c1",))))

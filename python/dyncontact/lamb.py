@@ -36,7 +36,6 @@ def green(
     """The influence functions at the points s = ``at`` (s > 0, not s_R), the cell
     integrals over ``cells`` [(sa, sb), ...] and, with ``constants=True``, the Rayleigh
     constants; ``digits`` for arbitrary precision (values as ``Decimal`` above 15)."""
-    kw = dict(c1=c1, c2=c2, poisson=poisson, at=at, cells=cells, constants=constants,
-              digits=digits)
+    kw = dict(locals())  # the keyword arguments, in the signature's order
     text = _dyncontact.impact(_args.argv("green", kw, lists=("at", "cells")))
     return GreenResult(text, _args.decimal_digits(digits))

@@ -65,9 +65,7 @@ def solve(
     Raises ``InvalidParameterError`` for a bad input, ``NumericalError`` for a case that
     cannot be computed to its tolerance.
     """
-    kw = dict(theta_deg=theta_deg, alpha=alpha, speed=speed, gamma=gamma, coupling=coupling,
-              solution=solution, c1=c1, c2=c2, poisson=poisson, digits=digits,
-              quantities=quantities)
+    kw = dict(locals())  # the keyword arguments, in the signature's order
     return _call(_args.argv("solve", kw, lists=("quantities",)), digits, SolveResult)
 
 
@@ -88,8 +86,7 @@ def stress(
     """The contact stress sigma_theta/(mu cot Theta) at the fractions r/(alpha t) in (0, 1]
     given by ``at`` (``wedge stress``): arrays ``r_over_alpha_t``,
     ``sigma_over_mu_cot_theta`` and their ``sigma_error_estimates``."""
-    kw = dict(theta_deg=theta_deg, alpha=alpha, speed=speed, gamma=gamma, coupling=coupling,
-              solution=solution, c1=c1, c2=c2, poisson=poisson, at=at, digits=digits)
+    kw = dict(locals())  # the keyword arguments, in the signature's order
     return _call(_args.argv("stress", kw, lists=("at",)), digits, TableReport)
 
 
@@ -111,8 +108,7 @@ def field(
     y < 0, given by ``at`` as pairs: stresses over mu cot Theta, particle velocities over
     c1 cot Theta and displacements over c1 t cot Theta, Cartesian, y out of the body (the
     paper's construction)."""
-    kw = dict(theta_deg=theta_deg, alpha=alpha, speed=speed, gamma=gamma, coupling=coupling,
-              solution=solution, c1=c1, c2=c2, poisson=poisson, at=at, digits=digits)
+    kw = dict(locals())  # the keyword arguments, in the signature's order
     return _call(_args.argv("field", kw, lists=("at",)), digits, TableReport)
 
 
@@ -135,8 +131,7 @@ def curve(
     (``wedge curve``): ``alpha_range=(min, max, steps)`` in m/s, 0 < min < max < c_R. Each
     key is a column over the rows, ``error_estimates[key]`` its estimates. At most 10^4
     rows without ``force=True``. ``progress=True`` shows a tqdm bar; Ctrl-C stops it."""
-    kw = dict(theta_deg=theta_deg, gamma=gamma, coupling=coupling, solution=solution, c1=c1,
-              c2=c2, poisson=poisson, alpha_range=alpha_range, digits=digits, force=force,
-              quantities=quantities)
+    kw = dict(locals())  # the keyword arguments, in the signature's order
+    del kw["progress"]
     argv = _args.argv("curve", kw, lists=("alpha_range", "quantities"))
     return _call(argv, digits, CurveResult, progress)
