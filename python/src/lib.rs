@@ -6,9 +6,9 @@
 //! Python side reads it into result objects (floats or `decimal.Decimal`, numpy arrays).
 //!
 //! Long work runs on a worker thread while the calling thread polls every
-//! [`POLL`]: it passes the fraction done to the progress callable and checks for signals, so
+//! `POLL` (50 ms): it passes the fraction done to the progress callable and checks for signals, so
 //! that Ctrl-C (KeyboardInterrupt) stops an impact march or a curve between its steps or rows.
-//! The engine's own threads (rayon) are limited by [`set_num_threads`].
+//! The engine's own threads (rayon) are limited by `set_num_threads`.
 
 use std::ops::ControlFlow;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
