@@ -3,7 +3,7 @@
 //! value is finite or refused, and the stated f64 error covers the actual error against 200
 //! bits of the same material.
 
-mod common;
+use crate::common;
 
 use common::fl;
 use lamb::HalfPlane;

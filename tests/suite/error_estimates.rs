@@ -105,7 +105,7 @@ fn grid(full: bool) -> Vec<Case> {
                 }
                 for (j, (sol, digits, ref_digits, alpha)) in runs.into_iter().enumerate() {
                     // V given for the paper's construction (the genuine inverse at 32 digits
-                    // costs minutes; it is checked in f64 in `tests/cli.rs`)
+                    // costs minutes; it is checked in f64 in `tests/suite/cli.rs`)
                     let speed = if (i + j) % 4 == 1 && sol == Solution::Paper {
                         // V given: the inverse solve, with alpha and p derived
                         Speed::Indenter(param("7.5"))
@@ -133,7 +133,7 @@ fn every_estimate_bounds_the_error_against_twice_the_precision() {
 }
 
 /// The same with four genuine cases at 30 digits (about three minutes more; the genuine
-/// solution at 30 digits is also checked against 40 in `tests/genuine_double_double.rs`).
+/// solution at 30 digits is also checked against 40 in `tests/suite/genuine_double_double.rs`).
 #[test]
 #[ignore]
 fn every_estimate_bounds_the_error_full_grid() {
