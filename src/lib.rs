@@ -55,7 +55,7 @@ pub const GUARD_BITS: u32 = 32;
 /// 100 times faster. Each quantity's estimate is then that of 104-bit arithmetic (on the
 /// paper's construction typically 1e-29 to 1e-28 relative, larger near the Rayleigh speed;
 /// on the genuine solution 1e-28 to 1e-24, its least-squares solve losing more), a bound that
-/// measured errors stay below (`tests/double_double.rs`, `tests/genuine_double_double.rs`).
+/// measured errors stay below (`tests/suite/double_double.rs`, `tests/suite/genuine_double_double.rs`).
 /// Larger requests use MPFR (`docs/double-double.md`).
 pub const DOUBLE_DOUBLE_DIGITS: u32 = 30;
 

@@ -4,7 +4,7 @@
 //!
 //! Every number is a [`Quantity`]: its decimal text at the digits asked for and its own
 //! absolute error estimate, never optimistic (checked against solves at twice the
-//! precision in `tests/error_estimates.rs`). A quantity a case may lack is an [`Entry`]: a
+//! precision in `tests/suite/error_estimates.rs`). A quantity a case may lack is an [`Entry`]: a
 //! value, or the reason it is unavailable. A required quantity that cannot be computed is an
 //! error naming it: no report carries a non-finite number.
 

@@ -2,7 +2,7 @@
 //! estimate and the raw probes behind it (the contour rule's level doubling, the differences
 //! between basis degrees and collocation sets), for studying the estimate against solves with
 //! other discretisation parameters:
-//! `cargo run --release -p genuine --example probe_estimate -- BITS P [deg=N] [hq=F] [ht=F] [ct=F] [os=F]`
+//! `cargo run --release -p genuine --features examples --example probe_estimate -- BITS P [deg=N] [hq=F] [ht=F] [ct=F] [os=F]`
 //! (hq, ht, ct multiply the default steps and tolerance; os sets the oversampling).
 use genuine::{GenuineCase, SolveOptions};
 use rug::Float;

@@ -8,8 +8,8 @@
 //!   `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and per step).
 //!
 //! The slowly driven parabola against Hertz's edge and the driven wedge's edge against the
-//! wedge crate are the tests `slow_free_edge_follows_hertz` (`tests/physics.rs`) and
-//! `edge_model_makes_the_edge_error_smooth` (`tests/bridge.rs`), which print what they
+//! wedge crate are the tests `slow_free_edge_follows_hertz` (`tests/suite/physics.rs`) and
+//! `edge_model_makes_the_edge_error_smooth` (`tests/suite/bridge.rs`), which print what they
 //! measure (`--nocapture`).
 use impact::{EdgeLaw, ImpactCase};
 

@@ -24,7 +24,7 @@ pub fn roundoff_floor(bits: u32) -> f64 {
 /// gamma 0.6): at p = 0.495 = 0.9986 m_R the contour rule of the plain step left 3.7e-32 and
 /// the degrees' extrapolation stated 5e-36 for an actual 9e-34; at p = 0.3 and 0.45 (0.61 and
 /// 0.91 m_R) the plain step and the extrapolation were within their estimates, and the
-/// 120-case comparison of `tests/error_estimates.rs` holds without the probe.
+/// 120-case comparison of `tests/suite/error_estimates.rs` holds without the probe.
 pub const NEAR_RAYLEIGH: f64 = 0.95;
 
 /// The factor of the contour step within [`NEAR_RAYLEIGH`] of the Rayleigh speed.

@@ -3,7 +3,7 @@
 //! estimates are useful (within 1e-24 relative away from the Rayleigh speed), and the
 //! command line serves `--digits 30` through it with the digits MPFR gives.
 
-mod common;
+use crate::common;
 
 use complexfn::{Dd, Real};
 use dyncontact::{build, curve_row, CaseInput, Selection, Speed};

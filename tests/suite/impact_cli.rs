@@ -1,7 +1,7 @@
 //! The `impact green` command line: documented keys, agreement with the library (and with
 //! the independent limits), arbitrary precision, and one-line errors with exit code 2.
 
-mod common;
+use crate::common;
 
 use common::{num, run, run_json};
 use lamb::HalfPlane;

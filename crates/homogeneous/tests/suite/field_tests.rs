@@ -1,6 +1,6 @@
 //! Tests of the homogeneous-function field against the equations of motion, the wavefront and
 //! surface conditions, the surface forms and a closed-form case (units c1 = mu = t = 1).
-mod common;
+use crate::common;
 use common::{rel, Test};
 use complexfn::plemelj::Face;
 use complexfn::Real;

@@ -3,7 +3,7 @@
 //! computed is declared unavailable with its reason while the rest of the report stands, and
 //! over random valid inputs no reported field is null unless declared so.
 
-mod common;
+use crate::common;
 
 use common::{num, run, run_json};
 use serde_json::Value;

@@ -3,7 +3,7 @@
 //! else; the shortcut of an identically vanishing Omega (no inner rule: b, Lambda0, S0 are
 //! exact zeros) gives what the general path gives for an Omega below the working precision.
 
-mod common;
+use crate::common;
 
 use dyncontact::{curve_row, solve, CaseInput, Entry, Selection, Speed, SOLVE_KEYS};
 use rug::Float;

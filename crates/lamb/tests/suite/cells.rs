@@ -2,7 +2,7 @@
 //! response where the cell sees one smooth wave region, and an integral over the strip of the
 //! (independently checked) step responses where the Rayleigh ray and the wavefronts cross it.
 
-mod common;
+use crate::common;
 
 use common::quad;
 use complexfn::quadrature::gauss_legendre;

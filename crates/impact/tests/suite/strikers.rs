@@ -6,7 +6,7 @@
 //! (`tests/reference/shell_mpmath.py`), and the energy balance with the striker's strain and
 //! vibration energy from an exact modal recursion.
 
-mod common;
+use crate::common;
 
 use common::{history, m2};
 use impact::striker::Ring;

@@ -72,9 +72,10 @@ fn grid(full: bool) -> Vec<Case> {
                 i += 1;
                 let alpha = alphas[i % 3];
                 // (variant, tested digits, reference digits, alpha): the whole grid twice (and
-                // every fourth case a third time) in f64 for the paper's construction, every fifth case for the genuine solution
-                // in f64 (its 32-digit reference costs about 6 s), every third at 30 digits
-                // for the paper's
+                // every fourth case a third time) in f64 for the paper's construction, every
+                // fifth case for the genuine solution in f64 (its 32-digit reference costs 1
+                // to 2 s; every tenth in the default tier), every third at 30 digits for the
+                // paper's
                 let other = alphas[(i + 1) % 3];
                 let mut runs = vec![
                     (Solution::Paper, None, 32, alpha),
@@ -83,29 +84,30 @@ fn grid(full: bool) -> Vec<Case> {
                 if i % 4 == 0 {
                     runs.push((Solution::Paper, None, 32, alphas[(i + 2) % 3]));
                 }
-                if i % 5 == 0 {
+                if i % 5 == 0 && (full || i % 10 == 0) {
                     runs.push((Solution::Genuine, None, 32, alpha));
                 }
                 if i % 3 == 0 {
                     runs.push((Solution::Paper, Some(30), 64, alpha));
                 }
                 // MPFR, one solve: every fourth case at 40 digits, every fourth (shifted) at
-                // 100 digits, against twice the digits
+                // 100 digits (every eighth in the default tier: with V given, the inverse
+                // solve and its reference cost 4 to 6 s), against twice the digits
                 if i % 4 == 1 {
                     runs.push((Solution::Paper, Some(40), 80, other));
                 }
-                if i % 4 == 3 {
+                if i % 4 == 3 && (full || i % 8 == 7) {
                     runs.push((Solution::Paper, Some(100), 200, alpha));
                 }
                 // genuine cases at 30 digits (a 64-digit reference costs about 35 s) in the
-                // `--ignored` tier: `cargo test --release --test error_estimates -- --ignored`
-                // runs four
+                // `--ignored` tier, `cargo test --release --test suite error_estimates --
+                // --ignored`, which runs four
                 if full && i % 10 == 0 {
                     runs.push((Solution::Genuine, Some(30), 64, alpha));
                 }
                 for (j, (sol, digits, ref_digits, alpha)) in runs.into_iter().enumerate() {
                     // V given for the paper's construction (the genuine inverse at 32 digits
-                    // costs minutes; it is checked in f64 in `tests/cli.rs`)
+                    // costs minutes; it is checked in f64 in `tests/suite/cli.rs`)
                     let speed = if (i + j) % 4 == 1 && sol == Solution::Paper {
                         // V given: the inverse solve, with alpha and p derived
                         Speed::Indenter(param("7.5"))
@@ -127,13 +129,15 @@ fn grid(full: bool) -> Vec<Case> {
     cases
 }
 
+/// The grid without half its genuine f64 and 100-digit cases (the full grid in the
+/// `--ignored` tier).
 #[test]
 fn every_estimate_bounds_the_error_against_twice_the_precision() {
     check(&grid(false));
 }
 
-/// The same with four genuine cases at 30 digits (about three minutes more; the genuine
-/// solution at 30 digits is also checked against 40 in `tests/genuine_double_double.rs`).
+/// The whole grid, with four genuine cases at 30 digits (about three minutes more; the genuine
+/// solution at 30 digits is also checked against 40 in `tests/suite/genuine_double_double.rs`).
 #[test]
 #[ignore]
 fn every_estimate_bounds_the_error_full_grid() {

@@ -3,7 +3,7 @@
 //! plane-wave momentum, Flamant's tangential displacement, Rayleigh-wave ellipticity),
 //! derivatives of the raw Rayleigh function, and plain quadrature of g for every moment.
 
-mod common;
+use crate::common;
 
 use common::*;
 use complexfn::Real;

@@ -5,7 +5,7 @@
 //! `wedge curve`: the admissibility flags per row, a grid spaced at f64's resolution at
 //! least, the requested alpha kept whatever `--digits` prints.
 
-mod common;
+use crate::common;
 
 use common::{num, run};
 use rug::Float;

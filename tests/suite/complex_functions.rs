@@ -13,7 +13,7 @@ const C2: f64 = 1000.0;
 
 /// (name, m, m_R) at 80 digits from tests/reference/rayleigh_mpmath.py.
 fn reference() -> Vec<(String, String, String)> {
-    include_str!("reference/rayleigh.txt")
+    include_str!("../reference/rayleigh.txt")
         .lines()
         .map(|l| {
             let mut it = l.split_whitespace();

@@ -69,7 +69,7 @@ fn zero() -> Cx<Float> {
     Cx::real(fl(0.0))
 }
 
-/// The supersonic uniform load (see tests/kernels.rs) at 128 bits: the contour representation
+/// The supersonic uniform load (see tests/suite/kernels.rs) at 128 bits: the contour representation
 /// reproduces the plane-wave field K(1/P) sigma (t - x/P) to 1e-30, and nothing ahead of the
 /// front.
 #[test]

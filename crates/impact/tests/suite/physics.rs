@@ -3,7 +3,7 @@
 //! first contact, the energy balance through the kernels, the 2-D Hertz relation in the
 //! quasi-static limit, convergence under refinement with the stated error estimates.
 
-mod common;
+use crate::common;
 
 use common::{free_parabola, m2};
 use impact::{Drive, EdgeLaw, ImpactCase, ImpactError, Profile};

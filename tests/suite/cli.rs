@@ -1,7 +1,7 @@
 //! The `wedge` command line: the documented forms work, outputs carry their keys and digits
 //! and agree with library calls, and bad input gives a one-line message and exit code 2.
 
-mod common;
+use crate::common;
 
 use common::{num, run, run_json};
 use serde_json::Value;

@@ -3,7 +3,7 @@
 //! flight, its rebound with estimates, the energy audit, and the shared time levels of driven
 //! runs.
 
-mod common;
+use crate::common;
 
 use common::m2;
 use impact::march::StepState;

@@ -47,17 +47,36 @@ fn check(name: &str, dd: wedge::Result<WithError<Dd>>, r: wedge::Result<WithErro
     actual / d.error
 }
 
-#[test]
-fn genuine_double_double_estimates_bound_the_actual_errors() {
-    let cases = [
+/// The cases of the default tier: both apex regimes, friction and none, near the Rayleigh
+/// speed and on the least-squares plateau.
+fn sampled_cases() -> Vec<(CaseInput, &'static str)> {
+    vec![
         // within 0.05 percent of the Rayleigh speed (c_R = 927.4 m/s)
         (input(89.0, "0.6", Coupling::On), "927"),
         // the least-squares plateau away from the Rayleigh speed
         (input(30.0, "0.2", Coupling::On), "93.5"),
-        (input(30.0, "0.2", Coupling::On), "927"),
         (input(86.0, "0", Coupling::Off), "841.8"),
         (input(5.0, "0.3", Coupling::On), "400.1"),
-    ];
+    ]
+}
+
+#[test]
+fn genuine_double_double_estimates_bound_the_actual_errors() {
+    check_cases(&sampled_cases());
+}
+
+/// The sampled cases and Theta 30 deg near the Rayleigh speed too.
+#[test]
+#[ignore]
+fn genuine_double_double_estimates_bound_the_actual_errors_every_case() {
+    let mut cases = sampled_cases();
+    cases.push((input(30.0, "0.2", Coupling::On), "927"));
+    check_cases(&cases);
+}
+
+/// Every quantity the double-double solve reports, for each (case, alpha), against the
+/// reference at REF_BITS.
+fn check_cases(cases: &[(CaseInput, &str)]) {
     let ratios: Vec<(String, f64)> = cases
         .par_iter()
         .flat_map_iter(|(inp, a)| {

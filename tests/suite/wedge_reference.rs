@@ -8,7 +8,7 @@ use serde_json::Value;
 use wedge::{Case, Coupling, Indenter, Material, Solution};
 
 fn reference() -> Value {
-    serde_json::from_str(include_str!("reference/wedge_reference.json")).unwrap()
+    serde_json::from_str(include_str!("../reference/wedge_reference.json")).unwrap()
 }
 
 fn s(v: &Value) -> String {
