@@ -138,6 +138,37 @@ pub fn build<T: CachedRules>(input: &CaseInput, speed: &Speed, like: &T) -> Resu
     solve_speed(&Variant(input), speed, like)
 }
 
+/// [`build`] in double-double arithmetic ([`complexfn::Dd`]), compiled once, here: a caller
+/// gets the solved case behind its trait object without instantiating the solvers at `Dd`
+/// itself (release builds share no generic code between crates; the library's tests save
+/// minutes of compile time this way). A genuine case with `digits` set is refused with
+/// [`WedgeError::ShortOfPrecision`] where double-double falls short of them, as in
+/// [`build`]; with `digits: None` it is the plain double-double solve.
+pub fn build_dd(input: &CaseInput, speed: &Speed) -> Result<Solved<Dd>> {
+    build(input, speed, &Dd::from_f64(0.0))
+}
+
+/// [`build`] on MPFR at `bits`, compiled once, here (as [`build_dd`]).
+pub fn build_mpfr(input: &CaseInput, speed: &Speed, bits: u32) -> Result<Solved<Float>> {
+    build(input, speed, &Float::with_val(bits, 0))
+}
+
+/// The genuine solution with the solver `options` at the contact speed `alpha` (m/s), on MPFR
+/// at `bits`, compiled once, here (as [`build_dd`]): a reference computed with other rules
+/// than those of its precision.
+pub fn genuine_mpfr(
+    material: &Material,
+    indenter: &Indenter,
+    options: genuine::SolveOptions,
+    alpha: &wedge::Param,
+    bits: u32,
+) -> Result<Solved<Float>> {
+    let solver = GenuineSolver::with_options(material, indenter, options);
+    Ok(Box::new(
+        solver.solve_alpha(alpha, &Float::with_val(bits, 0))?,
+    ))
+}
+
 /// Work done at the working precision of a case ([`at_precision`]).
 trait Job<R> {
     fn run<T: CachedRules>(&self, like: &T) -> Result<R>;

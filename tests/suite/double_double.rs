@@ -6,7 +6,7 @@
 use crate::common;
 
 use complexfn::{Dd, Real};
-use dyncontact::{build, curve_row, CaseInput, Selection, Speed};
+use dyncontact::{build_dd, build_mpfr, curve_row, CaseInput, Selection, Speed};
 use rug::Float;
 use wedge::{ContactSolution, Coupling, Indenter, Material, Param, Result, Solution, WithError};
 
@@ -63,8 +63,8 @@ fn double_double_estimates_bound_the_actual_errors() {
         // up to within 0.1 percent of the Rayleigh speed (c_R = 927.4 m/s)
         for a in ["93.5", "400.1", "700", "841.8", "926.5"] {
             let sp = Speed::Alpha(Param::parse("alpha", a).unwrap());
-            let d = build(inp, &sp, &Dd::from_f64(0.0)).unwrap();
-            let r = build(inp, &sp, &Float::with_val(REF_BITS, 0)).unwrap();
+            let d = build_dd(inp, &sp).unwrap();
+            let r = build_mpfr(inp, &sp, REF_BITS).unwrap();
             let at = format!("{} alpha {a}", dyncontact::describe(inp, &sp));
             let q = |name: &str| format!("{at}: {name}");
             worst = worst.max(check(&q("V"), d.v_hat(), r.v_hat()));

@@ -6,11 +6,11 @@
 //! plateau of the double-double fit included: Theta 30 deg, gamma 0.2, alpha = 93.5 m/s).
 
 use complexfn::{Dd, Real};
-use dyncontact::{build, CaseInput, Selection, Solved, Speed};
-use genuine::{GenuineSolver, SolveOptions};
+use dyncontact::{build_dd, CaseInput, Selection, Solved, Speed};
+use genuine::SolveOptions;
 use rayon::prelude::*;
 use rug::Float;
-use wedge::{ContactSolution, Coupling, Indenter, Material, Param, Solution, Solver, WithError};
+use wedge::{ContactSolution, Coupling, Indenter, Material, Param, Solution, WithError};
 
 const REF_BITS: u32 = 200;
 
@@ -82,23 +82,24 @@ fn check_cases(cases: &[(CaseInput, &str)]) {
         .flat_map_iter(|(inp, a)| {
             assert!(inp.uses_double_double());
             let alpha = Param::parse("alpha", a).unwrap();
-            // the solve itself (a request of 30 digits sends the cases where double-double
-            // falls short to MPFR: `double_double_shortfall_goes_to_mpfr`)
-            let d: Solved<Dd> = Box::new(
-                GenuineSolver::new(&inp.material, &inp.indenter)
-                    .solve_alpha(&alpha, &Dd::from_f64(0.0))
-                    .unwrap(),
-            );
+            // the solve itself, without the request of 30 digits (which sends the cases where
+            // double-double falls short to MPFR: `double_double_shortfall_goes_to_mpfr`);
+            // compiled in the library (`build_dd`), not here
+            let plain = CaseInput {
+                digits: None,
+                ..inp.clone()
+            };
+            let d: Solved<Dd> = build_dd(&plain, &Speed::Alpha(alpha.clone())).unwrap();
             // the reference: 200 bits, with the degree and the rules of 140 bits (its
             // estimates far below those of double-double, which the check asserts)
-            let solver = GenuineSolver::with_options(
+            let r = dyncontact::genuine_mpfr(
                 &inp.material,
                 &inp.indenter,
                 SolveOptions::for_precision(140),
-            );
-            let r = solver
-                .solve_alpha(&alpha, &Float::with_val(REF_BITS, 0))
-                .unwrap();
+                &alpha,
+                REF_BITS,
+            )
+            .unwrap();
             let at = format!(
                 "{} alpha {a}",
                 dyncontact::describe(inp, &Speed::Alpha(alpha))
@@ -112,33 +113,21 @@ fn check_cases(cases: &[(CaseInput, &str)]) {
                 v.error
             );
             let amp = |s: &dyn ContactSolution<Dd>| s.apex_leading().map(|l| l.amplitude);
-            let amp_ref = |s: &genuine::GenuineCase<Float>| {
-                ContactSolution::apex_leading(s).map(|l| l.amplitude)
-            };
+            let amp_ref = |s: &dyn ContactSolution<Float>| s.apex_leading().map(|l| l.amplitude);
             let mut out = vec![
-                (
-                    q("V"),
-                    check(&q("V"), d.v_hat(), ContactSolution::v_hat(&r)),
-                ),
-                (
-                    q("force"),
-                    check(&q("force"), d.force_hat(), ContactSolution::force_hat(&r)),
-                ),
+                (q("V"), check(&q("V"), d.v_hat(), r.v_hat())),
+                (q("force"), check(&q("force"), d.force_hat(), r.force_hat())),
                 (
                     q("apex"),
-                    check(&q("apex amplitude"), amp(&*d), amp_ref(&r)),
+                    check(&q("apex amplitude"), amp(&*d), amp_ref(&*r)),
                 ),
             ];
             for f in [0.3, 0.7, 0.95] {
-                let (xd, xr) = (d.p() * f, ContactSolution::p(&r) * f);
+                let (xd, xr) = (d.p() * f, r.p() * f);
                 let name = q(&format!("S({f} p)"));
                 out.push((
                     name.clone(),
-                    check(
-                        &name,
-                        d.stress_hat(&xd),
-                        ContactSolution::stress_hat(&r, &xr),
-                    ),
+                    check(&name, d.stress_hat(&xd), r.stress_hat(&xr)),
                 ));
             }
             out
@@ -156,10 +145,10 @@ fn double_double_shortfall_goes_to_mpfr() {
     let alpha = |a: &str| Speed::Alpha(Param::parse("alpha", a).unwrap());
     // Theta 89 deg: double-double reaches the request
     let near = input(89.0, "0.6", Coupling::On);
-    assert!(build(&near, &alpha("561.249"), &Dd::from_f64(0.0)).is_ok());
+    assert!(build_dd(&near, &alpha("561.249")).is_ok());
     // Theta 30 deg at 93.5 m/s: it does not, and the report comes from MPFR
     let far = input(30.0, "0.2", Coupling::On);
-    match build(&far, &alpha("93.5"), &Dd::from_f64(0.0)) {
+    match build_dd(&far, &alpha("93.5")) {
         Err(wedge::WedgeError::ShortOfPrecision { reached, asked, .. }) => {
             assert!(
                 reached > asked && asked == 1e-27,
