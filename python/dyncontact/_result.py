@@ -163,7 +163,9 @@ class Records:
             row: Dict[str, Any] = {}
             for k, v in r.items():
                 if isinstance(v, dict):
-                    row.update({f"{kk}_{k.rstrip('s')}": vv for kk, vv in v.items()})
+                    # error_estimate(s) -> <key>_error_estimate; other objects -> <key>_<name>
+                    suffix = "error_estimate" if k.startswith("error_estimate") else k
+                    row.update({f"{kk}_{suffix}": vv for kk, vv in v.items()})
                 else:
                     row[k] = v
             flat.append(row)
