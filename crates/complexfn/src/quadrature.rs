@@ -588,6 +588,25 @@ where
     V: QuadValue<T>,
     F: FnMut(&Point<T>) -> V,
 {
+    tanh_sinh_dyn(a, b, opts, &mut f)
+}
+
+/// The integrand as the rules see it: one dynamic call per node, so that the rules are
+/// compiled once per precision and value type rather than once per integrand (a node's
+/// integrand costs far more than the call).
+type Integrand<'f, T, V> = &'f mut dyn FnMut(&Point<T>) -> V;
+
+/// [`tanh_sinh`] behind its generic shim.
+fn tanh_sinh_dyn<T, V>(
+    a: &T,
+    b: &T,
+    opts: TsOptions,
+    f: Integrand<'_, T, V>,
+) -> Result<Quadrature<V>>
+where
+    T: CachedRules,
+    V: QuadValue<T>,
+{
     let strong = |e: Option<EndExponent>| e.filter(|x| !(x.alpha >= MAP_BELOW));
     match (strong(opts.left_exponent), strong(opts.right_exponent)) {
         (None, None) => tanh_sinh_plain(a, b, opts, f),
@@ -595,14 +614,14 @@ where
         (None, Some(ar)) => mapped_end(a, b, ar, false, opts, f),
         (Some(al), Some(ar)) => {
             let mid = (a.clone() + b) / 2.0;
-            let l = mapped_end(a, &mid, al, true, opts, |p: &Point<T>| {
+            let l = mapped_end(a, &mid, al, true, opts, &mut |p: &Point<T>| {
                 f(&Point {
                     v: p.v.clone(),
                     from_a: p.from_a.clone(),
                     to_b: p.to_b.clone() + &(b.clone() - &mid),
                 })
             })?;
-            let r = mapped_end(&mid, b, ar, false, opts, |p: &Point<T>| {
+            let r = mapped_end(&mid, b, ar, false, opts, &mut |p: &Point<T>| {
                 f(&Point {
                     v: p.v.clone(),
                     from_a: p.from_a.clone() + &(mid.clone() - a),
@@ -648,18 +667,17 @@ fn end_point<T: Real>(a: &T, b: &T, left: bool, near: T, far: T) -> Point<T> {
 
 /// The map at one singular end (see [`tanh_sinh`]): the power map, or the exponential map for
 /// a gap 1 + alpha below 1/[`KAPPA_POWER_MAX`].
-fn mapped_end<T, V, F>(
+fn mapped_end<T, V>(
     a: &T,
     b: &T,
     e: EndExponent,
     left: bool,
     opts: TsOptions,
-    f: F,
+    f: Integrand<'_, T, V>,
 ) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
-    F: FnMut(&Point<T>) -> V,
 {
     if !(e.gap_hi > 0.0 && e.gap_hi.is_finite()) {
         return Err(Error::InvalidParameter(crate::error::InvalidParameter {
@@ -676,18 +694,17 @@ where
 }
 
 /// The power map v - a = (b - a) y^kappa at one end (see [`tanh_sinh`]).
-fn power_end<T, V, F>(
+fn power_end<T, V>(
     a: &T,
     b: &T,
     e: EndExponent,
     left: bool,
     opts: TsOptions,
-    mut f: F,
+    f: Integrand<'_, T, V>,
 ) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
-    F: FnMut(&Point<T>) -> V,
 {
     // kappa = 1/(1 + alpha), rounded up to an integer up to INTEGER_KAPPA: the powers of y
     // are then products, and the mapped integrand keeps the bounded factor
@@ -749,7 +766,7 @@ where
             (e.clone() + 1.0, -e)
         }
     };
-    tanh_sinh_plain(&zero, &one, opts.without_ends(), |q: &Point<T>| {
+    tanh_sinh_plain(&zero, &one, opts.without_ends(), &mut |q: &Point<T>| {
         // y = distance from the singular end, normalised; 1 - y exactly from the offsets
         let (y, one_minus_y) = (&q.from_a, &q.to_b);
         if *y == 0.0 {
@@ -782,18 +799,17 @@ where
 /// The exponential map v - a = (b - a) e^(-s) at one end, for a gap 1 + alpha below
 /// 1/[`KAPPA_POWER_MAX`]: tanh-sinh over [0, S] and the closed-form tail F(S)/gap beyond
 /// (see [`tanh_sinh`]).
-fn exponential_end<T, V, F>(
+fn exponential_end<T, V>(
     a: &T,
     b: &T,
     e: EndExponent,
     left: bool,
     opts: TsOptions,
-    mut f: F,
+    f: Integrand<'_, T, V>,
 ) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
-    F: FnMut(&Point<T>) -> V,
 {
     let len = b.clone() - a;
     let len_f = len.to_f64().abs();
@@ -825,7 +841,7 @@ where
         f(&end_point(a, b, left, near, far)).scaled(&jac)
     };
     let zero = a.zero();
-    let body = tanh_sinh_plain(&zero, &s_end, opts.without_ends(), |q: &Point<T>| {
+    let body = tanh_sinh_plain(&zero, &s_end, opts.without_ends(), &mut |q: &Point<T>| {
         at(&q.from_a)
     })?;
     let tail = at(&s_end).scaled(&e.gap_at(a).recip());
@@ -842,11 +858,15 @@ where
     ))
 }
 
-fn tanh_sinh_plain<T, V, F>(a: &T, b: &T, opts: TsOptions, mut f: F) -> Result<Quadrature<V>>
+fn tanh_sinh_plain<T, V>(
+    a: &T,
+    b: &T,
+    opts: TsOptions,
+    f: Integrand<'_, T, V>,
+) -> Result<Quadrature<V>>
 where
     T: CachedRules,
     V: QuadValue<T>,
-    F: FnMut(&Point<T>) -> V,
 {
     let rule = tanh_sinh_rule::<T>(a.prec());
     let half = (b.clone() - a) / 2.0;
