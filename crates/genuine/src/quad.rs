@@ -257,6 +257,22 @@ where
     T: Real,
     F: FnMut(&Node<T>, &mut [T]),
 {
+    integrate_vec_dyn(a, b, dim, checked, rel_tol, h_min, t_max, &mut f)
+}
+
+/// [`integrate_vec_checked`] behind its generic shim: the rule compiled once per precision,
+/// the integrand reached by one dynamic call per node.
+#[allow(clippy::too_many_arguments)]
+fn integrate_vec_dyn<T: Real>(
+    a: &T,
+    b: &T,
+    dim: usize,
+    checked: usize,
+    rel_tol: f64,
+    h_min: f64,
+    t_max: f64,
+    f: &mut dyn FnMut(&Node<T>, &mut [T]),
+) -> (Vec<T>, f64) {
     let len = b.clone() - a;
     let zero = a.zero();
     let mut buf = vec![zero.clone(); dim];

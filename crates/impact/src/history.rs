@@ -98,7 +98,25 @@ pub(crate) struct HistorySum<T = f64> {
     /// The kernel's transform by level, laid out [space][time] (space 4W, time 2^(q+1)), for
     /// the current width.
     levels: Vec<Option<Vec<Complex<f64>>>>,
-    planner: FftPlanner<f64>,
+    planner: Planner,
+}
+
+/// The FFT planner behind non-generic calls: the planner's code is compiled once, here, not
+/// again in every crate that instantiates [`HistorySum`] (its generic code is most of a
+/// test binary's).
+struct Planner(FftPlanner<f64>);
+
+impl Planner {
+    #[inline(never)]
+    fn new() -> Self {
+        Planner(FftPlanner::new())
+    }
+
+    /// Plans for size n (forward and inverse).
+    #[inline(never)]
+    fn plans(&mut self, n: usize) -> (Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>) {
+        (self.0.plan_fft_forward(n), self.0.plan_fft_inverse(n))
+    }
 }
 
 impl<T: Scalar> HistorySum<T> {
@@ -113,7 +131,7 @@ impl<T: Scalar> HistorySum<T> {
             acc: std::collections::VecDeque::new(),
             first: 0,
             levels: Vec::new(),
-            planner: FftPlanner::new(),
+            planner: Planner::new(),
         }
     }
 
@@ -280,10 +298,7 @@ impl<T: Scalar> HistorySum<T> {
 
     /// Plans for sizes n (forward and inverse).
     fn plans(&mut self, n: usize) -> (Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>) {
-        (
-            self.planner.plan_fft_forward(n),
-            self.planner.plan_fft_inverse(n),
-        )
+        self.planner.plans(n)
     }
 
     /// The 2-D transform, in place, of data laid out [time][space] (nt x ns), returned laid

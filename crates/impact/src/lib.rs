@@ -31,7 +31,7 @@ pub use error::{ImpactError, Result};
 pub use march::EdgeLaw;
 pub use profile::Profile;
 pub use run::Run;
-pub use solve::Progress;
+pub use solve::{Progress, Solvable};
 pub use solved::{
     coarse_means, HistoryRow, PressureProfile, Rebound, SolvedImpact, Stage, Value, PEAK_DROP,
 };

@@ -36,6 +36,37 @@ pub struct Progress {
     pub t: f64,
 }
 
+/// The precisions a case is solved at, f64 and the double-double [`complexfn::Dd`]: each
+/// solves through one non-generic entry compiled in this crate, so that a caller's crate does
+/// not compile the march again.
+pub trait Solvable: Scalar + CachedRules {
+    /// Solves `case` at this precision ([`ImpactCase::solve_reporting`]).
+    fn solve_case(
+        case: &ImpactCase,
+        report: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+    ) -> Result<SolvedImpact<Self>>;
+}
+
+impl Solvable for f64 {
+    #[inline(never)]
+    fn solve_case(
+        case: &ImpactCase,
+        report: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+    ) -> Result<SolvedImpact<Self>> {
+        case.solve_dyn(report)
+    }
+}
+
+impl Solvable for complexfn::Dd {
+    #[inline(never)]
+    fn solve_case(
+        case: &ImpactCase,
+        report: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+    ) -> Result<SolvedImpact<Self>> {
+        case.solve_dyn(report)
+    }
+}
+
 impl ImpactCase {
     /// Refuses a free striker whose deceleration the finest time step does not resolve
     /// (`docs/impact.md`, section 9): against the plane-wave impedance rho c1 2b of its
@@ -72,10 +103,7 @@ impl ImpactCase {
     /// the double-double, about 32 digits): the discrete solution of the same grids to that
     /// precision (`docs/impact.md`, section 7). Above f64 the striker must be rigid and the
     /// profile one of the closed forms or a table (a user's function is evaluated in f64).
-    pub fn solve_at<T: Scalar + CachedRules>(
-        &self,
-        mut progress: impl FnMut(f64),
-    ) -> Result<SolvedImpact<T>> {
+    pub fn solve_at<T: Solvable>(&self, mut progress: impl FnMut(f64)) -> Result<SolvedImpact<T>> {
         self.solve_reporting::<T>(|p| {
             progress(p.fraction);
             ControlFlow::Continue(())
@@ -85,9 +113,18 @@ impl ImpactCase {
     /// Solves the case as [`ImpactCase::solve_at`], reporting every 64 steps where the march
     /// stands ([`Progress`]). When `report` answers [`ControlFlow::Break`], the march stops
     /// there and the solve ends with [`ImpactError::Stopped`] (a caller's interrupt).
-    pub fn solve_reporting<T: Scalar + CachedRules>(
+    pub fn solve_reporting<T: Solvable>(
         &self,
         mut report: impl FnMut(Progress) -> ControlFlow<()>,
+    ) -> Result<SolvedImpact<T>> {
+        T::solve_case(self, &mut report)
+    }
+
+    /// [`ImpactCase::solve_reporting`] behind its generic shim and [`Solvable`]: one copy per
+    /// precision, compiled in this crate, not one per caller's closure and crate.
+    fn solve_dyn<T: Scalar + CachedRules>(
+        &self,
+        report: &mut dyn FnMut(Progress) -> ControlFlow<()>,
     ) -> Result<SolvedImpact<T>> {
         self.validate()?;
         let extended = T::BITS > 53;
