@@ -4,15 +4,19 @@
 //! case with a thin-shell striker of equal mass (h_s/R = 0.05, steel) on one grid at R/100.
 //! The reference case in double-double (`ImpactCase::solve_at`, `impact run --digits`) on one
 //! grid at R/50 and with three grids at R/50, beside its f64 rows.
-//! The cost against N_t and N_x with fitted exponents: `cargo run --release -p impact
-//! --example cost_scaling`.
+//! The scaling group: the reference case on one grid at R/50, R/100, R/200 and R/400, and the
+//! fitted exponent of its time against its space-time cells N_t N_x (printed after the group,
+//! beside the exponent N log N would have over the same cells). The cost against N_t and N_x
+//! separately: `cargo run --release -p impact --features examples --example cost_scaling`.
 //!
 //! Run: `cargo bench --bench impact`.
 
+use std::cell::RefCell;
 use std::hint::black_box;
+use std::time::Instant;
 
 use complexfn::Dd;
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use criterion::{BenchmarkId, Criterion};
 use impact::{Drive, EdgeLaw, ImpactCase, ShellStriker, Striker, StrikerMaterial};
 
 fn reference(dx: f64, levels: usize, mass_ratio: f64) -> ImpactCase {
@@ -74,10 +78,84 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group! {
-    name = benches;
-    // no plots: criterion's plotting backend needs a system font
-    config = Criterion::default().without_plots();
-    targets = bench
+/// Slope of log y against log x (least squares).
+fn exponent(pts: &[(f64, f64)]) -> f64 {
+    let n = pts.len() as f64;
+    let (mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0);
+    for (x, y) in pts {
+        let (lx, ly) = (x.ln(), y.ln());
+        sx += lx;
+        sy += ly;
+        sxx += lx * lx;
+        sxy += lx * ly;
+    }
+    (n * sxy - sx * sy) / (n * sxx - sx * sx)
 }
-criterion_main!(benches);
+
+/// The reference case on one grid at four cell widths; prints the fitted exponent of the time
+/// against the space-time cells N_t N_x (N_x the widest contact in cells).
+fn scaling(c: &mut Criterion) {
+    let mut g = c.benchmark_group("impact_scaling");
+    g.sample_size(10);
+    let mut rows = Vec::new();
+    for r_over_dx in [50.0, 100.0, 200.0, 400.0] {
+        let case = reference(1.0 / r_over_dx, 1, 10.0);
+        let sol = case.solve(|_| {}).unwrap();
+        let run = &sol.runs[0];
+        let nx = run
+            .steps
+            .iter()
+            .map(|s| s.pressure.len())
+            .max()
+            .unwrap_or(0);
+        let cells = (run.steps.len() * nx) as f64;
+        // each sample's time per solve
+        let times = RefCell::new(Vec::new());
+        g.bench_with_input(
+            BenchmarkId::new(
+                "rigid_reference",
+                format!("R_over_dx={r_over_dx}, levels=1"),
+            ),
+            &case,
+            |b, case| {
+                b.iter_custom(|iters| {
+                    let t0 = Instant::now();
+                    for _ in 0..iters {
+                        black_box(case.solve(|_| {}).unwrap());
+                    }
+                    let e = t0.elapsed();
+                    times.borrow_mut().push(e.as_secs_f64() / iters as f64);
+                    e
+                })
+            },
+        );
+        let mut t = times.into_inner();
+        t.sort_by(f64::total_cmp);
+        if let Some(&median) = t.get(t.len() / 2) {
+            rows.push((r_over_dx, run.steps.len(), nx, cells, median));
+        }
+    }
+    g.finish();
+    if rows.len() < 2 {
+        return;
+    }
+    println!("reference case, one grid: time against the space-time cells N = N_t N_x");
+    for (r, nt, nx, cells, t) in &rows {
+        println!("  R/dx = {r:4}  N_t = {nt:5}  N_x = {nx:4}  N = {cells:9.0}  {t:.4} s");
+    }
+    let pts: Vec<(f64, f64)> = rows.iter().map(|r| (r.3, r.4)).collect();
+    let nlogn: Vec<(f64, f64)> = rows.iter().map(|r| (r.3, r.3 * r.3.ln())).collect();
+    println!(
+        "  fitted exponent of N: {:.2} (N log N over the same N: {:.2})",
+        exponent(&pts),
+        exponent(&nlogn)
+    );
+}
+
+fn main() {
+    // no plots: criterion's plotting backend needs a system font
+    let mut c = Criterion::default().without_plots().configure_from_args();
+    bench(&mut c);
+    scaling(&mut c);
+    c.final_summary();
+}

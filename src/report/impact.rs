@@ -258,6 +258,9 @@ pub struct GridReport {
     pub levels: usize,
     /// `model` or `whole`.
     pub edge_cell: &'static str,
+    /// The peak memory the run was estimated to need before it started, GiB
+    /// (`impact::cost`, `docs/impact.md`, section 10).
+    pub estimated_memory_gib: f64,
 }
 
 /// The contact's resolution on the finest grid.
@@ -591,6 +594,7 @@ impl RunReport {
                 } else {
                     "whole"
                 },
+                estimated_memory_gib: sol.case.cost_estimate().gib(),
             },
             c1t_over_r: rows.iter().map(|r| dg(r.t)).collect(),
             columns,
@@ -932,6 +936,7 @@ impl RunReport {
             "kappa": g.kappa,
             "levels": g.levels,
             "edge_cell": g.edge_cell,
+            "estimated_memory_gib": g.estimated_memory_gib,
         })
     }
 

@@ -28,9 +28,48 @@ fn bin(name: &str) -> &'static str {
     }
 }
 
+/// The key an impact run's grid gained after the refactor (the memory the run was estimated
+/// to need), removed before the comparison.
+const ADDED_GRID_KEY: &str = "estimated_memory_gib";
+
+/// An impact run's output with the grid's added key removed: from the JSON's grid object, or
+/// from the grid echoed in the CSV's header.
+fn without_added_grid_key(text: &str, expected: &str) -> String {
+    if text.starts_with('{') {
+        let mut v: Value = serde_json::from_str(text).expect("JSON output");
+        let removed = v
+            .get_mut("grid")
+            .and_then(Value::as_object_mut)
+            .and_then(|g| g.remove(ADDED_GRID_KEY));
+        assert!(
+            removed.is_some_and(|m| m.as_f64().is_some_and(|x| x > 0.0)),
+            "the grid states its estimated memory"
+        );
+        return if expected.trim_end().contains('\n') {
+            serde_json::to_string_pretty(&v).unwrap() + "\n"
+        } else {
+            v.to_string() + "\n"
+        };
+    }
+    let key = format!(",\"{ADDED_GRID_KEY}\":");
+    text.lines()
+        .map(|line| match line.find(&key) {
+            Some(at) if line.starts_with('#') => {
+                let rest = &line[at + key.len()..];
+                let end = rest.find([',', '}']).unwrap_or(rest.len());
+                format!("{}{}\n", &line[..at], &rest[end..])
+            }
+            _ => format!("{line}\n"),
+        })
+        .collect()
+}
+
 /// The output with the added keys of the stress and field reports removed (the solve
 /// report echoed its inputs already), serialised as the programs do.
 fn without_added(name: &str, text: &str, expected: &str) -> String {
+    if name.starts_with("impact_run") {
+        return without_added_grid_key(text, expected);
+    }
     let added = name.starts_with("wedge_stress") || name.starts_with("wedge_field");
     if !added || !name.ends_with("json") {
         return text.to_string();

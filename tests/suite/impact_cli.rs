@@ -948,3 +948,42 @@ fn run_to_separation_and_refusals() {
     }
     assert!(v["unavailable"]["energy_defect"].as_str().is_some());
 }
+
+/// A run states the memory it was estimated to need before it started (`grid`), and that
+/// statement is the one the limit is held to: a limit just below it refuses the run in one
+/// line naming --dx, just above it runs the case; the statement grows with the grid about as
+/// its space-time cells do (halving dx doubles the steps and the contact's cells).
+#[test]
+fn run_states_its_memory_need_and_the_limit_holds_it() {
+    let mut args = RUN_BASE.to_vec();
+    args.extend(["--end", "c1t/R=1", "--levels", "1"]);
+    let with_dx = |dx: &'static str| {
+        let mut a = args.clone();
+        a.extend(["--dx", dx]);
+        a
+    };
+    let coarse = json(&with_dx("0.01"));
+    let fine = json(&with_dx("0.0025"));
+    let gib = |v: &Value| v["grid"]["estimated_memory_gib"].as_f64().unwrap();
+    let (gc, gf) = (gib(&coarse), gib(&fine));
+    assert!(gc > 0.0 && gf > gc, "{gc} {gf}");
+    // beyond the fixed part (64 MiB), the history's part grows 16-fold for 4 times finer
+    let base = 64.0 / 1024.0;
+    let growth = (gf - base) / (gc - base);
+    assert!((8.0..=32.0).contains(&growth), "growth {growth}");
+    for (factor, refused) in [(0.99, true), (1.01, false)] {
+        let mut a = with_dx("0.0025");
+        let limit = format!("{}", gf * factor);
+        a.extend(["--memory-limit-gib", &limit]);
+        let (code, out, err) = impact(&a);
+        if refused {
+            assert_eq!(code, 2, "{err}");
+            assert_eq!(err.trim().lines().count(), 1, "{err}");
+            assert!(err.contains("GiB") && err.contains("--dx"), "{err}");
+        } else {
+            assert_eq!(code, 0, "{err}");
+            let v: Value = serde_json::from_str(&out).unwrap();
+            assert_eq!(gib(&v), gf);
+        }
+    }
+}
