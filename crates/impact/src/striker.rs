@@ -11,6 +11,8 @@
 //!
 //! Units as in the march: c1 = 1 and mu = 1 of the half-plane, lengths in R.
 
+pub mod disk;
+
 use std::f64::consts::PI;
 
 use lamb::HalfPlane;

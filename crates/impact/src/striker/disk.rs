@@ -1,0 +1,288 @@
+//! The free elastic disk: the full elastic cylinder striker's own response, harmonic by
+//! harmonic in the polar angle (`docs/strikers.md`, section 6).
+//!
+//! Plane strain, radius R = 1, shear modulus mu_s = 1 and density rho_s = 1 (so c2s = 1 and
+//! c1s = sqrt(2 (1 - nu)/(1 - 2 nu))), zero initial state, the surface r = 1 free of traction
+//! but for a normal pressure p(theta, t) (inward: sigma_rr = -p, sigma_r_theta = 0). For the
+//! pressure P(s) cos(n theta) (Laplace transform in time) the inward normal displacement of
+//! the surface is W_n(s) P(s) cos(n theta) ([`Disk::harmonic`]); its zeros on the imaginary
+//! axis, s = i omega, are the free disk's natural frequencies ([`Disk::frequencies`]).
+//!
+//! These are the building blocks of the cylinder's influence function G0; the march does not
+//! use them yet.
+
+use rustfft::num_complex::Complex64;
+
+use crate::error::{invalid, ImpactError, Result};
+
+/// A free elastic disk in its own units (R = 1, mu_s = 1, rho_s = 1, c2s = 1).
+#[derive(Clone, Copy, Debug)]
+pub struct Disk {
+    poisson: f64,
+    /// c1s/c2s.
+    c1: f64,
+}
+
+/// The smallest |s| R/c2s at which [`Disk::harmonic`] is formed: below it the determinant's
+/// leading terms cancel (for n >= 2 they vanish like s^2) and the response loses about
+/// 2 log10(1/|s|) digits.
+pub const SMALLEST_S: f64 = 1e-4;
+
+/// The largest circumferential order served.
+pub const LARGEST_ORDER: u32 = 100_000;
+
+impl Disk {
+    /// The disk of Poisson's ratio `poisson` in (-1, 1/2).
+    pub fn new(poisson: f64) -> Result<Self> {
+        if !(poisson > -1.0 && poisson < 0.5) {
+            return Err(invalid("poisson", poisson, "(-1, 0.5)"));
+        }
+        Ok(Disk {
+            poisson,
+            c1: (2.0 * (1.0 - poisson) / (1.0 - 2.0 * poisson)).sqrt(),
+        })
+    }
+
+    /// Poisson's ratio.
+    pub fn poisson(&self) -> f64 {
+        self.poisson
+    }
+
+    /// c1s/c2s.
+    pub fn c1(&self) -> f64 {
+        self.c1
+    }
+
+    /// W_n(s): the Laplace transform of the inward normal surface displacement (units
+    /// P R/mu_s) per unit transformed pressure P(s) cos(n theta), at s (units c2s/R) with
+    /// Re s >= 0 and |s| >= [`SMALLEST_S`]. With the potentials phi = A I_n(s r/c1s) cos n theta
+    /// and psi = B I_n(s r) sin n theta, x = s/c1s, y = s, f = x I_n'(x)/I_n(x) and
+    /// g = y I_n'(y)/I_n(y) (`docs/strikers.md`, section 6):
+    ///
+    ///     W_n = (f a22 - n a21)/(a11 a22 - a12 a21),
+    ///     a11 = y^2 + 2 n^2 - 2 f,  a12 = 2 n (g - 1),  a21 = 2 n (1 - f),
+    ///     a22 = 2 g - y^2 - 2 n^2.
+    pub fn harmonic(&self, n: u32, s: Complex64) -> Result<Complex64> {
+        if n > LARGEST_ORDER {
+            return Err(invalid("n", n, format!("0..={LARGEST_ORDER}")));
+        }
+        if !(s.re >= 0.0 && s.norm() >= SMALLEST_S && s.norm().is_finite()) {
+            return Err(invalid(
+                "s",
+                s,
+                format!("Re s >= 0 and {SMALLEST_S} <= |s| < inf (units c2s/R)"),
+            ));
+        }
+        let nf = f64::from(n);
+        let x = s / self.c1;
+        let y = s;
+        let f = log_derivative_i(n, x);
+        let g = log_derivative_i(n, y);
+        let y2 = y * y;
+        let a11 = y2 + 2.0 * nf * nf - 2.0 * f;
+        let a12 = (g - 1.0) * (2.0 * nf);
+        let a21 = (-f + 1.0) * (2.0 * nf);
+        let a22 = g * 2.0 - y2 - 2.0 * nf * nf;
+        let det = a11 * a22 - a12 * a21;
+        let w = (f * a22 - a21 * nf) / det;
+        if !(w.re.is_finite() && w.im.is_finite()) {
+            return Err(ImpactError::Step {
+                time: format!("s = {s}"),
+                reason: format!("the disk's harmonic n = {n} is singular there"),
+            });
+        }
+        Ok(w)
+    }
+
+    /// The free disk's natural angular frequencies (units c2s/R) of order n whose motion has a
+    /// radial displacement ~ cos(n theta), the lowest `count` above zero (the rigid
+    /// translation, n = 1, omega = 0, excluded; for n = 0 the breathing modes only, the
+    /// torsional ones having no radial motion). They are the zeros of the pole-free frequency
+    /// function [`Disk::frequency_function`], bracketed on a grid of 1/200 of the shear
+    /// wavelength's scale and refined by bisection to the rounding of omega.
+    pub fn frequencies(&self, n: u32, count: usize) -> Result<Vec<f64>> {
+        if n > 1000 {
+            return Err(invalid("n", n, "0..=1000"));
+        }
+        let step = 0.005;
+        let mut out = Vec::with_capacity(count);
+        let mut lo = 1e-3;
+        let mut flo = self.frequency_function(n, lo);
+        while out.len() < count {
+            let hi = lo + step;
+            let fhi = self.frequency_function(n, hi);
+            if flo == 0.0 {
+                out.push(lo);
+            } else if flo.signum() != fhi.signum() {
+                let (mut a, mut b, mut fa) = (lo, hi, flo);
+                for _ in 0..200 {
+                    let mid = 0.5 * (a + b);
+                    if mid <= a || mid >= b {
+                        break;
+                    }
+                    let fm = self.frequency_function(n, mid);
+                    if fm == 0.0 {
+                        a = mid;
+                        b = mid;
+                        break;
+                    }
+                    if fm.signum() == fa.signum() {
+                        a = mid;
+                        fa = fm;
+                    } else {
+                        b = mid;
+                    }
+                }
+                out.push(0.5 * (a + b));
+            }
+            lo = hi;
+            flo = fhi;
+            if lo > 1e4 {
+                return Err(ImpactError::Step {
+                    time: format!("omega = {lo}"),
+                    reason: format!("fewer than {count} frequencies of order {n} found"),
+                });
+            }
+        }
+        Ok(out)
+    }
+
+    /// The frequency function of order n at the real angular frequency omega: the determinant
+    /// of [`Disk::harmonic`] at s = i omega times J_n(omega/c1s) J_n(omega), free of poles
+    /// (z1 = omega/c1s, z2 = omega, j_k = J_n(z_k), d_k = z_k J_n'(z_k)):
+    ///
+    ///     E = ((2 n^2 - z2^2) j1 - 2 d1)((z2^2 - 2 n^2) j2 + 2 d2) - 4 n^2 (d2 - j2)(j1 - d1),
+    ///
+    /// and for n = 0 its first factor alone (the second is the torsional modes').
+    pub fn frequency_function(&self, n: u32, omega: f64) -> f64 {
+        let nf = f64::from(n);
+        let (z1, z2) = (omega / self.c1, omega);
+        let (j1, d1) = bessel_j(n, z1);
+        let (j2, d2) = bessel_j(n, z2);
+        let first = (2.0 * nf * nf - z2 * z2) * j1 - 2.0 * d1;
+        if n == 0 {
+            return first;
+        }
+        first * ((z2 * z2 - 2.0 * nf * nf) * j2 + 2.0 * d2)
+            - 4.0 * nf * nf * (d2 - j2) * (j1 - d1)
+    }
+}
+
+/// z I_n'(z)/I_n(z) = n + z I_(n+1)(z)/I_n(z) for Re z >= 0, z != 0: the ratio
+/// I_(n+1)/I_n = 1/(2 (n + 1)/z + 1/(2 (n + 2)/z + ...)) by the modified Lentz method (the
+/// continued fraction of the minimal solution of the recurrence, convergent for every z).
+fn log_derivative_i(n: u32, z: Complex64) -> Complex64 {
+    let tiny = Complex64::new(1e-150, 0.0);
+    let inv = z.inv();
+    let b = |k: u32| inv * (2.0 * (f64::from(n) + f64::from(k)));
+    // Lentz on f = 0 + 1/(b1 + 1/(b2 + ...)), the ratio itself
+    let mut f = tiny;
+    let mut c = f;
+    let mut d = Complex64::new(0.0, 0.0);
+    for k in 1..1_000_000u32 {
+        let bk = b(k);
+        d = bk + d;
+        if d.norm() < 1e-150 {
+            d = tiny;
+        }
+        c = bk + c.inv();
+        if c.norm() < 1e-150 {
+            c = tiny;
+        }
+        d = d.inv();
+        let delta = c * d;
+        f *= delta;
+        if (delta - 1.0).norm() < 1e-16 {
+            break;
+        }
+    }
+    Complex64::new(f64::from(n), 0.0) + z * f
+}
+
+/// (J_n(x), x J_n'(x)) for real x >= 0 by Miller's backward recurrence, normalised by
+/// J_0 + 2 (J_2 + J_4 + ...) = 1.
+fn bessel_j(n: u32, x: f64) -> (f64, f64) {
+    if x == 0.0 {
+        return (if n == 0 { 1.0 } else { 0.0 }, 0.0);
+    }
+    let nf = n as usize;
+    // start well above both n and x: the recurrence's growing solution is J's dominant
+    // partner Y, so backward from there J emerges to the working precision
+    let start = (nf.max(x as usize) + 30 + (x.sqrt() * 10.0) as usize) | 1;
+    let start = start + 1; // even
+    let (mut jp1, mut j) = (0.0f64, 1e-300f64);
+    let mut norm = 0.0;
+    let (mut jn, mut jn1) = (0.0, 0.0); // J_n and J_(n+1), unnormalised
+    for k in (1..=start).rev() {
+        // j = J_k, jp1 = J_(k+1): J_(k-1) = (2 k/x) J_k - J_(k+1)
+        let jm1 = (2.0 * k as f64 / x) * j - jp1;
+        jp1 = j;
+        j = jm1;
+        let km1 = k - 1;
+        if km1 == nf {
+            jn = j;
+            jn1 = jp1;
+        }
+        if km1 % 2 == 0 {
+            norm += if km1 == 0 { j } else { 2.0 * j };
+        }
+        if j.abs() > 1e250 {
+            // rescale everything carried
+            let sc = 1e-250;
+            j *= sc;
+            jp1 *= sc;
+            norm *= sc;
+            jn *= sc;
+            jn1 *= sc;
+        }
+    }
+    let (jn, jn1) = (jn / norm, jn1 / norm);
+    // x J_n' = n J_n - x J_(n+1)
+    (jn, f64::from(n) * jn - x * jn1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// J_0, J_1, J_5 at a few points against their tabulated values (Abramowitz and Stegun,
+    /// table 9.1).
+    #[test]
+    fn bessel_j_matches_tables() {
+        let cases = [
+            (0, 1.0, 0.765_197_686_557_966_6),
+            (1, 1.0, 0.440_050_585_744_933_5),
+            (0, 10.0, -0.245_935_764_451_348_3),
+            (1, 10.0, 0.043_472_746_168_861_44),
+            (5, 10.0, -0.234_061_528_186_793_7),
+        ];
+        for (n, x, want) in cases {
+            let (j, _) = bessel_j(n, x);
+            assert!((j - want).abs() < 1e-14, "J_{n}({x}) = {j}, want {want}");
+        }
+        // x J_1'(x) = x J_0 - J_1
+        let (j1, d1) = bessel_j(1, 10.0);
+        let (j0, _) = bessel_j(0, 10.0);
+        assert!((d1 - (10.0 * j0 - j1)).abs() < 1e-14);
+    }
+
+    /// The modified Bessel functions' log-derivative at small z, from their power series:
+    /// n + z^2/(2 (n + 1)) - z^4/(8 (n + 1)^2 (n + 2)) + O(z^6) (z^6/96 = 1e-14 at z = 0.01); and at z = i t, where
+    /// z I_n'(z)/I_n(z) = t J_n'(t)/J_n(t) (I_n(i t) = i^n J_n(t)), against Miller's J.
+    #[test]
+    fn log_derivative_small_argument_and_imaginary_axis() {
+        for n in [0u32, 1, 3] {
+            let z = 1e-2;
+            let f = log_derivative_i(n, Complex64::new(z, 0.0));
+            let m = f64::from(n);
+            let want = m + z * z / (2.0 * (m + 1.0)) - z.powi(4) / (8.0 * (m + 1.0).powi(2) * (m + 2.0));
+            assert!((f.re - want).abs() < 2e-14 && f.im == 0.0, "{n}: {f}");
+            for t in [0.7, 3.0, 12.5] {
+                let f = log_derivative_i(n, Complex64::new(0.0, t));
+                let (j, d) = bessel_j(n, t);
+                let want = d / j;
+                assert!((f - want).norm() < 1e-12 * want.abs().max(1.0), "{n} {t}: {f} vs {want}");
+            }
+        }
+    }
+}
