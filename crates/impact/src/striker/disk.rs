@@ -163,8 +163,7 @@ impl Disk {
         if n == 0 {
             return first;
         }
-        first * ((z2 * z2 - 2.0 * nf * nf) * j2 + 2.0 * d2)
-            - 4.0 * nf * nf * (d2 - j2) * (j1 - d1)
+        first * ((z2 * z2 - 2.0 * nf * nf) * j2 + 2.0 * d2) - 4.0 * nf * nf * (d2 - j2) * (j1 - d1)
     }
 }
 
@@ -275,13 +274,17 @@ mod tests {
             let z = 1e-2;
             let f = log_derivative_i(n, Complex64::new(z, 0.0));
             let m = f64::from(n);
-            let want = m + z * z / (2.0 * (m + 1.0)) - z.powi(4) / (8.0 * (m + 1.0).powi(2) * (m + 2.0));
+            let want =
+                m + z * z / (2.0 * (m + 1.0)) - z.powi(4) / (8.0 * (m + 1.0).powi(2) * (m + 2.0));
             assert!((f.re - want).abs() < 2e-14 && f.im == 0.0, "{n}: {f}");
             for t in [0.7, 3.0, 12.5] {
                 let f = log_derivative_i(n, Complex64::new(0.0, t));
                 let (j, d) = bessel_j(n, t);
                 let want = d / j;
-                assert!((f - want).norm() < 1e-12 * want.abs().max(1.0), "{n} {t}: {f} vs {want}");
+                assert!(
+                    (f - want).norm() < 1e-12 * want.abs().max(1.0),
+                    "{n} {t}: {f} vs {want}"
+                );
             }
         }
     }
