@@ -59,9 +59,11 @@ impl Disk {
     /// and psi = B I_n(s r) sin n theta, x = s/c1s, y = s, f = x I_n'(x)/I_n(x) and
     /// g = y I_n'(y)/I_n(y) (`docs/strikers.md`, section 6):
     ///
-    ///     W_n = (f a22 - n a21)/(a11 a22 - a12 a21),
-    ///     a11 = y^2 + 2 n^2 - 2 f,  a12 = 2 n (g - 1),  a21 = 2 n (1 - f),
-    ///     a22 = 2 g - y^2 - 2 n^2.
+    /// ```text
+    /// W_n = (f a22 - n a21)/(a11 a22 - a12 a21),
+    /// a11 = y^2 + 2 n^2 - 2 f,  a12 = 2 n (g - 1),  a21 = 2 n (1 - f),
+    /// a22 = 2 g - y^2 - 2 n^2.
+    /// ```
     pub fn harmonic(&self, n: u32, s: Complex64) -> Result<Complex64> {
         if n > LARGEST_ORDER {
             return Err(invalid("n", n, format!("0..={LARGEST_ORDER}")));
@@ -151,7 +153,9 @@ impl Disk {
     /// of [`Disk::harmonic`] at s = i omega times J_n(omega/c1s) J_n(omega), free of poles
     /// (z1 = omega/c1s, z2 = omega, j_k = J_n(z_k), d_k = z_k J_n'(z_k)):
     ///
-    ///     E = ((2 n^2 - z2^2) j1 - 2 d1)((z2^2 - 2 n^2) j2 + 2 d2) - 4 n^2 (d2 - j2)(j1 - d1),
+    /// ```text
+    /// E = ((2 n^2 - z2^2) j1 - 2 d1)((z2^2 - 2 n^2) j2 + 2 d2) - 4 n^2 (d2 - j2)(j1 - d1),
+    /// ```
     ///
     /// and for n = 0 its first factor alone (the second is the torsional modes').
     pub fn frequency_function(&self, n: u32, omega: f64) -> f64 {
