@@ -17,6 +17,7 @@ use std::time::Instant;
 
 use complexfn::Dd;
 use criterion::{BenchmarkId, Criterion};
+use impact::cost::fitted_exponent;
 use impact::{Drive, EdgeLaw, ImpactCase, ShellStriker, Striker, StrikerMaterial};
 
 fn reference(dx: f64, levels: usize, mass_ratio: f64) -> ImpactCase {
@@ -78,20 +79,6 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-/// Slope of log y against log x (least squares).
-fn exponent(pts: &[(f64, f64)]) -> f64 {
-    let n = pts.len() as f64;
-    let (mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0);
-    for (x, y) in pts {
-        let (lx, ly) = (x.ln(), y.ln());
-        sx += lx;
-        sy += ly;
-        sxx += lx * lx;
-        sxy += lx * ly;
-    }
-    (n * sxy - sx * sy) / (n * sxx - sx * sx)
-}
-
 /// The reference case on one grid at four cell widths; prints the fitted exponent of the time
 /// against the space-time cells N_t N_x (N_x the widest contact in cells).
 fn scaling(c: &mut Criterion) {
@@ -147,8 +134,8 @@ fn scaling(c: &mut Criterion) {
     let nlogn: Vec<(f64, f64)> = rows.iter().map(|r| (r.3, r.3 * r.3.ln())).collect();
     println!(
         "  fitted exponent of N: {:.2} (N log N over the same N: {:.2})",
-        exponent(&pts),
-        exponent(&nlogn)
+        fitted_exponent(&pts).unwrap_or(f64::NAN),
+        fitted_exponent(&nlogn).unwrap_or(f64::NAN)
     );
 }
 

@@ -9,6 +9,7 @@
 //! `cargo run --release -p impact --features examples --example cost_scaling`
 use std::time::Instant;
 
+use impact::cost::fitted_exponent;
 use impact::{Drive, EdgeLaw, ImpactCase, Profile};
 
 fn seconds(case: &ImpactCase) -> (f64, usize, usize) {
@@ -29,20 +30,6 @@ fn seconds(case: &ImpactCase) -> (f64, usize, usize) {
         sizes = (run.steps.len(), nx);
     }
     (best, sizes.0, sizes.1)
-}
-
-/// Slope of log y against log x.
-fn exponent(pts: &[(f64, f64)]) -> f64 {
-    let n = pts.len() as f64;
-    let (mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0);
-    for (x, y) in pts {
-        let (lx, ly) = (x.ln(), y.ln());
-        sx += lx;
-        sy += ly;
-        sxx += lx * lx;
-        sxy += lx * ly;
-    }
-    (n * sxy - sx * sy) / (n * sxx - sx * sx)
 }
 
 fn punch(a: f64, end: f64) -> ImpactCase {
@@ -66,7 +53,10 @@ fn main() {
         println!("  N_t = {nt:5}  N_x = {nx:4}  {s:.4} s");
         pts.push((nt as f64, s));
     }
-    println!("  fitted exponent of N_t: {:.2}", exponent(&pts));
+    println!(
+        "  fitted exponent of N_t: {:.2}",
+        fitted_exponent(&pts).unwrap_or(f64::NAN)
+    );
     println!("driven flat punch, dx = R/100: cost against N_x (c1 t/R = 2)");
     let mut pts = Vec::new();
     for a in [0.1, 0.2, 0.4, 0.8, 1.6] {
@@ -74,7 +64,10 @@ fn main() {
         println!("  N_t = {nt:5}  N_x = {nx:4}  {s:.4} s");
         pts.push((nx as f64, s));
     }
-    println!("  fitted exponent of N_x: {:.2}", exponent(&pts));
+    println!(
+        "  fitted exponent of N_x: {:.2}",
+        fitted_exponent(&pts).unwrap_or(f64::NAN)
+    );
     println!("reference case (free rigid cylinder to c1 t/R = 10), one grid: cost against 1/dx");
     let mut pts = Vec::new();
     for dx in [0.04, 0.02, 0.01, 0.005, 0.0025] {
@@ -88,5 +81,8 @@ fn main() {
         );
         pts.push((1.0 / dx, s));
     }
-    println!("  fitted exponent of 1/dx: {:.2}", exponent(&pts));
+    println!(
+        "  fitted exponent of 1/dx: {:.2}",
+        fitted_exponent(&pts).unwrap_or(f64::NAN)
+    );
 }

@@ -97,3 +97,49 @@ impl ImpactCase {
         }
     }
 }
+
+/// The exponent of a cost's growth: the least-squares slope of ln y against ln x over the
+/// points (x, y); `None` unless there are two points of different x, all x and y positive.
+pub fn fitted_exponent(pts: &[(f64, f64)]) -> Option<f64> {
+    if pts.len() < 2
+        || pts
+            .iter()
+            .any(|&(x, y)| !(x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite()))
+    {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let (mut sx, mut sy, mut sxx, mut sxy) = (0.0, 0.0, 0.0, 0.0);
+    for (x, y) in pts {
+        let (lx, ly) = (x.ln(), y.ln());
+        sx += lx;
+        sy += ly;
+        sxx += lx * lx;
+        sxy += lx * ly;
+    }
+    let slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    slope.is_finite().then_some(slope)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fitted_exponent;
+
+    /// A power law's exponent is recovered exactly, and N ln N over 2e3..1.2e5 fits about 1.1.
+    #[test]
+    fn fitted_exponent_recovers_power_laws() {
+        let pts: Vec<(f64, f64)> = [1.0, 2.0, 5.0, 11.0_f64]
+            .iter()
+            .map(|&x| (x, 3.0 * x.powf(1.7)))
+            .collect();
+        assert!((fitted_exponent(&pts).unwrap() - 1.7).abs() < 1e-12);
+        assert_eq!(fitted_exponent(&[(2.0, 1.0), (2.0, 3.0)]), None);
+        assert_eq!(fitted_exponent(&[(2.0, 1.0)]), None);
+        let nlogn: Vec<(f64, f64)> = [2250.0, 8000.0, 31000.0, 122000.0_f64]
+            .iter()
+            .map(|&n| (n, n * n.ln()))
+            .collect();
+        let p = fitted_exponent(&nlogn).unwrap();
+        assert!((1.08..1.12).contains(&p), "{p}");
+    }
+}
