@@ -5,6 +5,7 @@
 mod common;
 
 mod bridge;
+mod disk;
 mod edge_exponents;
 mod physics;
 mod precision;
