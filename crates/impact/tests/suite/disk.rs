@@ -72,7 +72,7 @@ fn harmonic_response_matches_the_independent_solution() {
 
 /// The limits of section 6: uniform pressure on the plane-strain disk (n = 0), the rigid
 /// translation of the disk of mass pi (n = 1, W_1 s^2 -> 1), the static cos 2 theta load,
-/// W_2(0) = (3 - 2 nu)/6 (Airy stress function); and bad input refused with its name.
+/// W_2(0) = (3 - 2 nu)/6 and W_3(0) = (5 - 4 nu)/16 (Airy stress function); and bad input refused with its name.
 #[test]
 fn static_and_rigid_limits_and_refusals() {
     for nu in [0.1, 0.25, 0.3, 0.45] {
@@ -88,6 +88,8 @@ fn static_and_rigid_limits_and_refusals() {
         assert!((w1.re - 1.0).abs() < 1e-6, "{nu}: {w1}");
         let w2 = disk.harmonic(2, s).unwrap();
         assert!((w2.re - (3.0 - 2.0 * nu) / 6.0).abs() < 1e-6, "{nu}: {w2}");
+        let w3 = disk.harmonic(3, s).unwrap();
+        assert!((w3.re - (5.0 - 4.0 * nu) / 16.0).abs() < 1e-6, "{nu}: {w3}");
     }
     let disk = Disk::new(0.25).unwrap();
     let msg = |e: impact::ImpactError| e.to_string();
