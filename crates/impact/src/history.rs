@@ -296,16 +296,11 @@ impl<T: Scalar> HistorySum<T> {
         }
     }
 
-    /// Plans for sizes n (forward and inverse).
-    fn plans(&mut self, n: usize) -> (Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>) {
-        self.planner.plans(n)
-    }
-
     /// The 2-D transform, in place, of data laid out [time][space] (nt x ns), returned laid
     /// out [space][time].
     fn forward_2d(&mut self, data: &mut [Complex<f64>], nt: usize, ns: usize) -> Vec<Complex<f64>> {
-        let (fs, _) = self.plans(ns);
-        let (ft, _) = self.plans(nt);
+        let (fs, _) = self.planner.plans(ns);
+        let (ft, _) = self.planner.plans(nt);
         fs.process(data);
         let mut tr = vec![Complex::default(); nt * ns];
         for t in 0..nt {
@@ -389,8 +384,8 @@ impl<T: Scalar> HistorySum<T> {
             *a *= b;
         }
         // inverse: time (on the [space][time] layout), then space for the target rows
-        let (_, it) = self.plans(nt);
-        let (_, is) = self.plans(ns);
+        let (_, it) = self.planner.plans(nt);
+        let (_, is) = self.planner.plans(ns);
         it.process(&mut tr);
         let norm = 1.0 / (nt * ns) as f64;
         let mut line = vec![Complex::default(); ns];

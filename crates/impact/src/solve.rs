@@ -47,25 +47,22 @@ pub trait Solvable: Scalar + CachedRules {
     ) -> Result<SolvedImpact<Self>>;
 }
 
-impl Solvable for f64 {
-    #[inline(never)]
-    fn solve_case(
-        case: &ImpactCase,
-        report: &mut dyn FnMut(Progress) -> ControlFlow<()>,
-    ) -> Result<SolvedImpact<Self>> {
-        case.solve_dyn(report)
-    }
+/// The entry of each precision, compiled here.
+macro_rules! solvable {
+    ($($t:ty),*) => {$(
+        impl Solvable for $t {
+            #[inline(never)]
+            fn solve_case(
+                case: &ImpactCase,
+                report: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+            ) -> Result<SolvedImpact<Self>> {
+                case.solve_dyn(report)
+            }
+        }
+    )*};
 }
 
-impl Solvable for complexfn::Dd {
-    #[inline(never)]
-    fn solve_case(
-        case: &ImpactCase,
-        report: &mut dyn FnMut(Progress) -> ControlFlow<()>,
-    ) -> Result<SolvedImpact<Self>> {
-        case.solve_dyn(report)
-    }
-}
+solvable!(f64, complexfn::Dd);
 
 impl ImpactCase {
     /// Refuses a free striker whose deceleration the finest time step does not resolve

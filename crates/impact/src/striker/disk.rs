@@ -13,6 +13,8 @@
 
 use rustfft::num_complex::Complex64;
 
+use complexfn::roots::illinois;
+
 use crate::error::{invalid, ImpactError, Result};
 
 /// A free elastic disk in its own units (R = 1, mu_s = 1, rho_s = 1, c2s = 1).
@@ -27,6 +29,9 @@ pub struct Disk {
 /// leading terms cancel (for n >= 2 they vanish like s^2) and the response loses about
 /// 2 log10(1/|s|) digits.
 pub const SMALLEST_S: f64 = 1e-4;
+
+/// The most terms of the Bessel ratio's continued fraction (it needs about |s| R/c2s).
+const CF_TERMS: u32 = 1_000_000;
 
 /// The largest circumferential order served.
 pub const LARGEST_ORDER: u32 = 100_000;
@@ -78,8 +83,12 @@ impl Disk {
         let nf = f64::from(n);
         let x = s / self.c1;
         let y = s;
-        let f = log_derivative_i(n, x);
-        let g = log_derivative_i(n, y);
+        let unconverged = || ImpactError::Step {
+            time: format!("s = {s}"),
+            reason: format!("the Bessel ratio's continued fraction of order {n} did not converge"),
+        };
+        let f = log_derivative_i(n, x).ok_or_else(unconverged)?;
+        let g = log_derivative_i(n, y).ok_or_else(unconverged)?;
         let y2 = y * y;
         let a11 = y2 + 2.0 * nf * nf - 2.0 * f;
         let a12 = (g - 1.0) * (2.0 * nf);
@@ -101,12 +110,13 @@ impl Disk {
     /// translation, n = 1, omega = 0, excluded; for n = 0 the breathing modes only, the
     /// torsional ones having no radial motion). They are the zeros of the pole-free frequency
     /// function [`Disk::frequency_function`], bracketed on a grid of 1/200 of the shear
-    /// wavelength's scale and refined by bisection to the rounding of omega.
+    /// wavelength's scale and refined by `complexfn::roots::illinois` to the rounding of omega.
     pub fn frequencies(&self, n: u32, count: usize) -> Result<Vec<f64>> {
         if n > 1000 {
             return Err(invalid("n", n, "0..=1000"));
         }
         let step = 0.005;
+        let f = |omega: &f64| Ok::<f64, ImpactError>(self.frequency_function(n, *omega));
         let mut out = Vec::with_capacity(count);
         let mut lo = 1e-3;
         let mut flo = self.frequency_function(n, lo);
@@ -116,26 +126,7 @@ impl Disk {
             if flo == 0.0 {
                 out.push(lo);
             } else if flo.signum() != fhi.signum() {
-                let (mut a, mut b, mut fa) = (lo, hi, flo);
-                for _ in 0..200 {
-                    let mid = 0.5 * (a + b);
-                    if mid <= a || mid >= b {
-                        break;
-                    }
-                    let fm = self.frequency_function(n, mid);
-                    if fm == 0.0 {
-                        a = mid;
-                        b = mid;
-                        break;
-                    }
-                    if fm.signum() == fa.signum() {
-                        a = mid;
-                        fa = fm;
-                    } else {
-                        b = mid;
-                    }
-                }
-                out.push(0.5 * (a + b));
+                out.push(illinois(lo, flo, hi, fhi, &f64::EPSILON, f)?);
             }
             lo = hi;
             flo = fhi;
@@ -173,8 +164,9 @@ impl Disk {
 
 /// z I_n'(z)/I_n(z) = n + z I_(n+1)(z)/I_n(z) for Re z >= 0, z != 0: the ratio
 /// I_(n+1)/I_n = 1/(2 (n + 1)/z + 1/(2 (n + 2)/z + ...)) by the modified Lentz method (the
-/// continued fraction of the minimal solution of the recurrence, convergent for every z).
-fn log_derivative_i(n: u32, z: Complex64) -> Complex64 {
+/// continued fraction of the minimal solution of the recurrence, convergent for every z; it
+/// takes about |z| terms). `None` if it has not converged after [`CF_TERMS`] terms.
+fn log_derivative_i(n: u32, z: Complex64) -> Option<Complex64> {
     let tiny = Complex64::new(1e-150, 0.0);
     let inv = z.inv();
     let b = |k: u32| inv * (2.0 * (f64::from(n) + f64::from(k)));
@@ -182,7 +174,7 @@ fn log_derivative_i(n: u32, z: Complex64) -> Complex64 {
     let mut f = tiny;
     let mut c = f;
     let mut d = Complex64::new(0.0, 0.0);
-    for k in 1..1_000_000u32 {
+    for k in 1..=CF_TERMS {
         let bk = b(k);
         d = bk + d;
         if d.norm() < 1e-150 {
@@ -196,10 +188,10 @@ fn log_derivative_i(n: u32, z: Complex64) -> Complex64 {
         let delta = c * d;
         f *= delta;
         if (delta - 1.0).norm() < 1e-16 {
-            break;
+            return Some(Complex64::new(f64::from(n), 0.0) + z * f);
         }
     }
-    Complex64::new(f64::from(n), 0.0) + z * f
+    None
 }
 
 /// (J_n(x), x J_n'(x)) for real x >= 0 by Miller's backward recurrence, normalised by
@@ -276,13 +268,13 @@ mod tests {
     fn log_derivative_small_argument_and_imaginary_axis() {
         for n in [0u32, 1, 3] {
             let z = 1e-2;
-            let f = log_derivative_i(n, Complex64::new(z, 0.0));
+            let f = log_derivative_i(n, Complex64::new(z, 0.0)).unwrap();
             let m = f64::from(n);
             let want =
                 m + z * z / (2.0 * (m + 1.0)) - z.powi(4) / (8.0 * (m + 1.0).powi(2) * (m + 2.0));
             assert!((f.re - want).abs() < 2e-14 && f.im == 0.0, "{n}: {f}");
             for t in [0.7, 3.0, 12.5] {
-                let f = log_derivative_i(n, Complex64::new(0.0, t));
+                let f = log_derivative_i(n, Complex64::new(0.0, t)).unwrap();
                 let (j, d) = bessel_j(n, t);
                 let want = d / j;
                 assert!(
