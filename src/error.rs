@@ -63,6 +63,9 @@ pub fn flag_of(name: &'static str) -> &'static str {
         "s" => "at",
         "sa" | "sb" | "cell [sa, sb]" => "cells",
         "speed_over_c1" => "speed_over_c1",
+        "arc over R" => "arc_over_R",
+        "angle" | "angles and times" => "at_deg",
+        "c2 t/R" => "times",
         "profile"
         | "profile of a shell striker"
         | "profile exponent k"

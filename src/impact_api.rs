@@ -17,7 +17,7 @@ use rug::Float;
 
 use crate::error::{Error, InputError};
 use crate::input::impact as spec;
-use crate::report::impact::{EdgeReport, GreenReport, RunReport};
+use crate::report::impact::{EdgeReport, GreenReport, RunReport, StrikerGreenReport};
 
 /// The most digits a run gives: the march runs in double-double (about 32 digits) above
 /// f64.
@@ -532,4 +532,79 @@ pub fn edge(input: &EdgeInput) -> R<EdgeReport> {
         })
         .collect::<std::result::Result<Vec<f64>, _>>()?;
     Ok(EdgeReport::of(&hp, law, &speeds, crate::VERSION)?)
+}
+
+/// The inputs of `impact striker-green` ([`striker_green`]).
+#[derive(Clone, Debug, Default)]
+pub struct StrikerGreenInput {
+    /// The striker's P-wave speed in m/s (with `c2`).
+    pub c1: Option<f64>,
+    /// The striker's S-wave speed in m/s (with `c1`).
+    pub c2: Option<f64>,
+    /// The striker's Poisson's ratio (instead of `c1`, `c2`).
+    pub poisson: Option<f64>,
+    /// The striker: `cylinder`.
+    pub striker: String,
+    /// The loaded arc's width over R.
+    pub arc_over_r: Option<f64>,
+    /// The receiver arcs' centres in degrees, comma-separated.
+    pub at_deg: Option<String>,
+    /// The times, `c2t/R=T1,T2,...`.
+    pub times: Option<String>,
+}
+
+/// A free elastic cylinder's own influence function: the mean inward normal displacement
+/// over receiver arcs under a unit step pressure on an arc of the same width
+/// (`impact::striker::green`, `docs/strikers.md`, section 7).
+pub fn striker_green(input: &StrikerGreenInput) -> R<StrikerGreenReport> {
+    if input.striker != "cylinder" {
+        return Err(InputError::new(
+            "striker",
+            format!(
+                "invalid --striker {:?}: admissible value is cylinder (a free elastic disk)",
+                input.striker
+            ),
+        )
+        .into());
+    }
+    let nu = spec::poisson(input.c1, input.c2, input.poisson)?;
+    let arc = input.arc_over_r.ok_or_else(|| {
+        InputError::new(
+            "arc_over_R",
+            "missing --arc-over-R ARC (the loaded arc's width over R)",
+        )
+    })?;
+    let at = input.at_deg.as_deref().ok_or_else(|| {
+        InputError::new(
+            "at_deg",
+            "missing --at-deg A1,A2,... (receiver arcs' centres in degrees)",
+        )
+    })?;
+    let angles = split_list("at_deg", "--at-deg", at)?
+        .iter()
+        .map(|a| {
+            a.parse::<f64>()
+                .ok()
+                .filter(|v| v.is_finite())
+                .ok_or_else(|| {
+                    InputError::new(
+                        "at_deg",
+                        format!("invalid --at-deg entry {a:?}: not a finite number"),
+                    )
+                })
+        })
+        .collect::<std::result::Result<Vec<f64>, _>>()?;
+    let times_spec = input.times.as_deref().ok_or_else(|| {
+        InputError::new("times", "missing --times c2t/R=T1,T2,... (times over R/c2)")
+    })?;
+    let times = spec::scaled_time_list("times", times_spec, "--times", "c2t/R")?;
+    let disk = impact::striker::disk::Disk::new(nu)?;
+    let radians: Vec<f64> = angles.iter().map(|a| a.to_radians()).collect();
+    let response = disk.arc_step_response(arc, &radians, &times)?;
+    Ok(StrikerGreenReport::of(
+        nu,
+        &angles,
+        response,
+        crate::VERSION,
+    ))
 }

@@ -280,6 +280,7 @@ fn impact_call(py: Python<'_>, argv: Vec<String>, progress: Option<Py<PyAny>>) -
             .json_text(),
             ImpactCommand::Green(a) => impact_api::green(&a.input())?.json_text(),
             ImpactCommand::Edge(a) => impact_api::edge(&a.input()?)?.json_text(),
+            ImpactCommand::StrikerGreen(a) => impact_api::striker_green(&a.input()?)?.json_text(),
         })
     })?;
     done.map_err(|e| to_py(py, e))

@@ -6,7 +6,7 @@ use clap::{Args, Parser, Subcommand};
 
 use super::MaterialArgs;
 use crate::error::InputError;
-use crate::impact_api::{EdgeInput, GreenInput, RunInput};
+use crate::impact_api::{EdgeInput, GreenInput, RunInput, StrikerGreenInput};
 
 /// The transient impact of strikers on an elastic half-plane (plane strain, the impact
 /// paper): rigid, elastic and thin-shell strikers over a whole impact to their rebound,
@@ -33,6 +33,55 @@ pub enum Command {
     /// The power law p ~ d^lambda of the contact pressure at a contact edge moving at speed
     /// D, for each speed range and edge law (docs/edge.md).
     Edge(EdgeArgs),
+    /// A striker's own influence function: the inward normal surface displacement of a free
+    /// elastic cylinder (R = 1, mu_s = 1, rho_s = 1) under a unit pressure switched on at
+    /// t = 0 over an arc, averaged over arcs of the same width, with its rigid translation
+    /// and without (docs/strikers.md, section 7).
+    StrikerGreen(StrikerGreenArgs),
+}
+
+/// Arguments of `impact striker-green`.
+#[derive(Args, Debug)]
+pub struct StrikerGreenArgs {
+    /// The striker's material: its Poisson's ratio, or its --c1 and --c2 (m/s).
+    #[command(flatten)]
+    material: MaterialArgs,
+    /// The striker: `cylinder` (a free elastic disk in plane strain).
+    #[arg(long, default_value = "cylinder")]
+    striker: String,
+    /// The loaded arc's width 2 theta0 R over R, in [0.002, pi].
+    #[arg(long = "arc-over-R")]
+    arc_over_r: Option<f64>,
+    /// Comma-separated centres of the receiver arcs, degrees from the loaded arc's centre.
+    #[arg(long, allow_hyphen_values = true)]
+    at_deg: Option<String>,
+    /// The times, `c2t/R=T1,T2,...`, each in (0, 100] (c2 the striker's S-wave speed).
+    #[arg(long)]
+    times: Option<String>,
+    /// JSON output (default: CSV with `#` header lines).
+    #[arg(long)]
+    json: bool,
+}
+
+impl StrikerGreenArgs {
+    /// Whether JSON was asked for (`--json`) instead of CSV.
+    pub fn json(&self) -> bool {
+        self.json
+    }
+    /// The inputs of [`crate::impact_api::striker_green`] (a material flag that is not a
+    /// finite number refused, naming it).
+    pub fn input(&self) -> Result<StrikerGreenInput, InputError> {
+        let (c1, c2, poisson) = self.material.numbers()?;
+        Ok(StrikerGreenInput {
+            c1,
+            c2,
+            poisson,
+            striker: self.striker.clone(),
+            arc_over_r: self.arc_over_r,
+            at_deg: self.at_deg.clone(),
+            times: self.times.clone(),
+        })
+    }
 }
 
 /// Arguments of `impact green`.

@@ -209,12 +209,26 @@ pub fn poisson(c1: Option<f64>, c2: Option<f64>, nu: Option<f64>) -> R<f64> {
 
 /// The times of `c1t/R=T1,T2,...` (each finite).
 pub fn time_list(parameter: &'static str, spec: &str, flag: &str) -> R<Vec<f64>> {
-    let rest = spec.strip_prefix("c1t/R=").ok_or_else(|| {
-        InputError::new(
-            parameter,
-            format!("invalid {flag} {spec:?}: write c1t/R=VALUE[,VALUE...]"),
-        )
-    })?;
+    scaled_time_list(parameter, spec, flag, "c1t/R")
+}
+
+/// The times of `SCALE=T1,T2,...` (each finite), `scale` naming the time's unit (`c1t/R`,
+/// `c2t/R`).
+pub fn scaled_time_list(
+    parameter: &'static str,
+    spec: &str,
+    flag: &str,
+    scale: &str,
+) -> R<Vec<f64>> {
+    let rest = spec
+        .strip_prefix(scale)
+        .and_then(|r| r.strip_prefix('='))
+        .ok_or_else(|| {
+            InputError::new(
+                parameter,
+                format!("invalid {flag} {spec:?}: write {scale}=VALUE[,VALUE...]"),
+            )
+        })?;
     rest.split(',')
         .map(|s| {
             s.trim()

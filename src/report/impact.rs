@@ -1560,3 +1560,114 @@ impl EdgeReport {
         out
     }
 }
+
+/// The keys of a [`StrikerGreenReport`] as JSON, in order.
+pub const STRIKER_GREEN_KEYS: &[&str] = &[
+    "version",
+    "striker",
+    "poisson",
+    "arc_over_R",
+    "convention",
+    "c2t_over_R",
+    "angle_deg",
+    "w_over_p0R_mu",
+    "w_def_over_p0R_mu",
+    "error_estimate",
+    "method",
+];
+
+/// The conventions of a striker-green report.
+pub const STRIKER_GREEN_CONVENTION: &str = "free elastic cylinder in plane strain, R = 1, mu_s = 1, rho_s = 1; unit pressure p0 switched on at t = 0 over |theta| <= theta0, 2 theta0 R = arc; w: inward normal displacement averaged over the arc of the same width centred at each angle, arrays [angle][time]; w_def = w - X(t) cos(theta) sin(theta0)/theta0, X = F t^2/(2 m), F = 2 p0 R sin(theta0), m = pi R^2 rho_s (docs/strikers.md, section 7)";
+
+/// The columns of a striker-green report's CSV table.
+pub const STRIKER_GREEN_COLUMNS: &[&str] = &[
+    "angle_deg",
+    "c2t_over_R",
+    "w_over_p0R_mu",
+    "w_def_over_p0R_mu",
+    "error_estimate",
+];
+
+/// The report of `impact striker-green`: a free elastic cylinder's own influence function
+/// ([`impact::striker::green`]).
+#[derive(Clone, Debug)]
+pub struct StrikerGreenReport {
+    /// The library version.
+    pub version: String,
+    /// The striker's Poisson's ratio.
+    pub poisson: f64,
+    /// The receiver arcs' centres as asked for, degrees.
+    pub angle_deg: Vec<f64>,
+    /// The response.
+    pub response: impact::striker::green::ArcStepResponse,
+}
+
+impl StrikerGreenReport {
+    /// The report of `response` (a disk of Poisson's ratio `poisson`), its angles as given in
+    /// degrees.
+    pub fn of(
+        poisson: f64,
+        angle_deg: &[f64],
+        response: impact::striker::green::ArcStepResponse,
+        version: &str,
+    ) -> Self {
+        StrikerGreenReport {
+            version: version.to_string(),
+            poisson,
+            angle_deg: angle_deg.to_vec(),
+            response,
+        }
+    }
+
+    /// The report as one JSON object ([`STRIKER_GREEN_KEYS`] order).
+    pub fn to_json(&self) -> Value {
+        let r = &self.response;
+        json!({
+            "version": self.version,
+            "striker": "cylinder",
+            "poisson": self.poisson,
+            "arc_over_R": r.arc,
+            "convention": STRIKER_GREEN_CONVENTION,
+            "c2t_over_R": r.times,
+            "angle_deg": self.angle_deg,
+            "w_over_p0R_mu": r.total,
+            "w_def_over_p0R_mu": r.deformation,
+            "error_estimate": {
+                "w_over_p0R_mu": r.error,
+                "w_def_over_p0R_mu": r.error,
+            },
+            "method": {
+                "harmonics": r.harmonics,
+                "frequencies": r.frequencies,
+                "description": "periodised half-plane (Lamb, closed form) + rigid translation + harmonic remainder inverted by Fourier series (docs/strikers.md, section 7)",
+            },
+        })
+    }
+
+    /// CSV with `#` header lines: one row per angle and time ([`STRIKER_GREEN_COLUMNS`]).
+    pub fn to_csv(&self, cmdline: &str) -> String {
+        let r = &self.response;
+        let mut out = format!(
+            "# {cmdline}\n# impact striker-green {}: cylinder, poisson {}, arc_over_R {}\n# {}\n",
+            self.version,
+            json!(self.poisson),
+            json!(r.arc),
+            STRIKER_GREEN_CONVENTION
+        );
+        out.push_str(&STRIKER_GREEN_COLUMNS.join(","));
+        out.push('\n');
+        for (j, a) in self.angle_deg.iter().enumerate() {
+            for (i, t) in r.times.iter().enumerate() {
+                out.push_str(&format!(
+                    "{},{},{},{},{}\n",
+                    json!(a),
+                    json!(t),
+                    json!(r.total[j][i]),
+                    json!(r.deformation[j][i]),
+                    json!(r.error[j][i])
+                ));
+            }
+        }
+        out
+    }
+}

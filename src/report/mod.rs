@@ -64,6 +64,7 @@ printed!(wedge::FieldReport, one_line, table);
 printed!(impact::RunReport, indented, csv);
 printed!(impact::GreenReport, indented, csv);
 printed!(impact::EdgeReport, indented, csv);
+printed!(impact::StrikerGreenReport, indented, csv);
 
 /// A JSON number with exactly the digits given (arbitrary precision), from decimal text in
 /// any form the inputs accept (`+86`, `.5`, `500.`, `086` are written `86`, `0.5`, `500.0`,

@@ -12,6 +12,7 @@
 //! Units as in the march: c1 = 1 and mu = 1 of the half-plane, lengths in R.
 
 pub mod disk;
+pub mod green;
 
 use std::f64::consts::PI;
 

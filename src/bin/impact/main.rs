@@ -9,7 +9,9 @@
 //! I delta(t) and u = P/(pi mu) W(s) for a step P H(t); keys `g_zz`, `g_xz`, `g_xx`,
 //! `W_zz`, `U_xz`, `U_xx`, cell integrals `Ix_*` = Int g ds and `It_*` = Int g/s ds,
 //! `--constants` for s_R, r_zz, r_xx and K_R); `impact edge` prints the power law of the
-//! pressure at a moving contact edge. Every value comes with its absolute error estimate.
+//! pressure at a moving contact edge; `impact striker-green` prints a free elastic cylinder's
+//! own influence function (keys `c2t_over_R`, `angle_deg`, `w_over_p0R_mu`,
+//! `w_def_over_p0R_mu`, `error_estimate`). Every value comes with its absolute error estimate.
 //! Errors: one line on stderr, exit code 2.
 
 use std::ops::ControlFlow;
@@ -59,6 +61,7 @@ fn run(cli: ImpactCli) -> Result<(), Error> {
         Command::Green(a) => emit(&impact_api::green(&a.input())?, a.json()),
         Command::Run(a) => emit(&run_with_progress(&a.input()?)?, a.json()),
         Command::Edge(a) => emit(&impact_api::edge(&a.input()?)?, a.json()),
+        Command::StrikerGreen(a) => emit(&impact_api::striker_green(&a.input()?)?, a.json()),
     }
     Ok(())
 }

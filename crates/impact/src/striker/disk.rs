@@ -67,8 +67,11 @@ impl Disk {
     /// ```text
     /// W_n = (f a22 - n a21)/(a11 a22 - a12 a21),
     /// a11 = y^2 + 2 n^2 - 2 f,  a12 = 2 n (g - 1),  a21 = 2 n (1 - f),
-    /// a22 = 2 g - y^2 - 2 n^2.
+    /// a22 = 2 g - y^2 - 2 n^2,
     /// ```
+    ///
+    /// evaluated in a form free of the cancellation of the determinant's
+    /// leading terms.
     pub fn harmonic(&self, n: u32, s: Complex64) -> Result<Complex64> {
         if n > LARGEST_ORDER {
             return Err(invalid("n", n, format!("0..={LARGEST_ORDER}")));
@@ -87,15 +90,9 @@ impl Disk {
             time: format!("s = {s}"),
             reason: format!("the Bessel ratio's continued fraction of order {n} did not converge"),
         };
-        let f = log_derivative_i(n, x).ok_or_else(unconverged)?;
-        let g = log_derivative_i(n, y).ok_or_else(unconverged)?;
-        let y2 = y * y;
-        let a11 = y2 + 2.0 * nf * nf - 2.0 * f;
-        let a12 = (g - 1.0) * (2.0 * nf);
-        let a21 = (-f + 1.0) * (2.0 * nf);
-        let a22 = g * 2.0 - y2 - 2.0 * nf * nf;
-        let det = a11 * a22 - a12 * a21;
-        let w = (f * a22 - a21 * nf) / det;
+        let df = ratio_term(n, x).ok_or_else(unconverged)?;
+        let dg = ratio_term(n, y).ok_or_else(unconverged)?;
+        let w = transfer(nf, df, dg, y * y);
         if !(w.re.is_finite() && w.im.is_finite()) {
             return Err(ImpactError::Step {
                 time: format!("s = {s}"),
@@ -162,11 +159,56 @@ impl Disk {
     }
 }
 
-/// z I_n'(z)/I_n(z) = n + z I_(n+1)(z)/I_n(z) for Re z >= 0, z != 0: the ratio
-/// I_(n+1)/I_n = 1/(2 (n + 1)/z + 1/(2 (n + 2)/z + ...)) by the modified Lentz method (the
-/// continued fraction of the minimal solution of the recurrence, convergent for every z; it
-/// takes about |z| terms). `None` if it has not converged after [`CF_TERMS`] terms.
+/// W_n from the Bessel ratio terms df = x I_(n+1)(x)/I_n(x) (x = s/c1s) and
+/// dg = y I_(n+1)(y)/I_n(y) (y = s), so that f = n + df and g = n + dg
+/// (`docs/strikers.md`, section 6). With A = 2 n (n - 1), u = y^2 - 2 df and v = 2 dg - y^2 the
+/// matrix is a11 = A + u, a22 = v - A, a12 = A + 2 n dg, a21 = -A - 2 n df, and
+///
+/// ```text
+/// det = A (2 (n + 1) (df + dg) - 2 y^2) + u v + 4 n^2 df dg,
+/// W_n = (n v + df (v + 2 n))/det,
+/// ```
+///
+/// the terms A^2 of a11 a22 and a12 a21 (of order n^4 against the determinant's n^2 s^2)
+/// cancelled by hand, so no digits are lost at small |s|/n.
+pub(crate) fn transfer(n: f64, df: Complex64, dg: Complex64, y2: Complex64) -> Complex64 {
+    let a = 2.0 * n * (n - 1.0);
+    let u = y2 - df * 2.0;
+    let v = dg * 2.0 - y2;
+    let det = ((df + dg) * (2.0 * (n + 1.0)) - y2 * 2.0) * a + u * v + df * dg * (4.0 * n * n);
+    (v * n + df * (v + 2.0 * n)) / det
+}
+
+/// The ratio terms rho_n = z I_(n+1)(z)/I_n(z) for n = 0, ..., out.len() - 1 at once, by
+/// the backward recurrence rho_(n-1) = z^2/(2 n + rho_n) of the minimal solution, started
+/// from 0 above both the last order and 1.1 |z| by 50 orders: above |z| a starting error is
+/// damped by |rho_n/(2 n)|^2 <= 1/4 per step. Re z >= 0, z != 0.
+pub(crate) fn ratio_terms(z: Complex64, out: &mut [Complex64]) {
+    let Some(last) = out.len().checked_sub(1) else {
+        return;
+    };
+    let start = last.max((1.1 * z.norm()) as usize) + 50;
+    let z2 = z * z;
+    let mut rho = Complex64::new(0.0, 0.0);
+    for n in (1..=start).rev() {
+        rho = z2 / (rho + 2.0 * n as f64);
+        if n - 1 <= last {
+            out[n - 1] = rho;
+        }
+    }
+}
+
+/// z I_n'(z)/I_n(z) = n + [`ratio_term`].
+#[cfg(test)]
 fn log_derivative_i(n: u32, z: Complex64) -> Option<Complex64> {
+    ratio_term(n, z).map(|r| r + f64::from(n))
+}
+
+/// z I_(n+1)(z)/I_n(z) for Re z >= 0, z != 0 (so that z I_n'(z)/I_n(z) is n plus it): the
+/// ratio I_(n+1)/I_n = 1/(2 (n + 1)/z + 1/(2 (n + 2)/z + ...)) by the modified Lentz method
+/// (the continued fraction of the minimal solution of the recurrence, convergent for every z;
+/// it takes about |z| terms). `None` if it has not converged after [`CF_TERMS`] terms.
+fn ratio_term(n: u32, z: Complex64) -> Option<Complex64> {
     let tiny = Complex64::new(1e-150, 0.0);
     let inv = z.inv();
     let b = |k: u32| inv * (2.0 * (f64::from(n) + f64::from(k)));
@@ -188,7 +230,7 @@ fn log_derivative_i(n: u32, z: Complex64) -> Option<Complex64> {
         let delta = c * d;
         f *= delta;
         if (delta - 1.0).norm() < 1e-16 {
-            return Some(Complex64::new(f64::from(n), 0.0) + z * f);
+            return Some(z * f);
         }
     }
     None

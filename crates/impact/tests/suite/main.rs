@@ -7,6 +7,7 @@ mod common;
 mod bridge;
 mod disk;
 mod edge_exponents;
+mod green;
 mod physics;
 mod precision;
 mod rebound;

@@ -1,0 +1,366 @@
+//! The free elastic cylinder's own influence function: the inward normal surface
+//! displacement of a free disk under a uniform pressure switched on at t = 0 over an arc,
+//! averaged over arcs of the same width (`docs/strikers.md`, section 7).
+//!
+//! Units of [`Disk`]: R = 1, mu_s = 1, rho_s = 1 (c2s = 1), the pressure p0 = 1. With
+//! theta0 the arc's half-width, the pressure's harmonics are p_0 = theta0/pi and
+//! p_n = 2 sin(n theta0)/(n pi), the receiver's mean multiplies harmonic n by
+//! sinc(n theta0), so the response at the arc centred at theta_j is, in the Laplace domain,
+//!
+//! ```text
+//! G(theta_j, s) = sum_n w_n(theta_j) W_n(s)/s,   w_n = p_n sinc(n theta0) cos(n theta_j).
+//! ```
+//!
+//! The series is split into three parts, each in the form where it converges:
+//!
+//! - the periodised half-plane: F(n, s), the half-plane's transfer function at the
+//!   wavenumber n (same material), summed over all n by Poisson's formula, is the
+//!   half-plane's strip-on-strip mean response summed over the images theta_j + 2 pi m, in
+//!   closed form in the time domain from the Lamb crate ([`HalfPlane::cell_mean_primitive_zz`]);
+//! - the rigid translation t^2/2 w_1 (the pole 1/s^2 of W_1) and the half-plane's uniform
+//!   mode w_0 t/c1s (its transfer 1/(c1s s) at n = 0), in closed form;
+//! - the remainder sum_n w_n [W_n - F(n)]/s (W_0 itself at n = 0, W_1 without its pole),
+//!   whose terms fall like n^-2 faster than the series' and whose time function starts
+//!   like t^2 (the curvature's correction): inverted by Fourier series along
+//!   Re s = sigma (Durbin), with its truncations estimated by halving.
+
+use std::f64::consts::PI;
+
+use lamb::HalfPlane;
+use rayon::prelude::*;
+use rustfft::num_complex::Complex64;
+
+use super::disk::{ratio_terms, transfer, Disk};
+use crate::error::{invalid, ImpactError, Result};
+
+/// The admissible arc widths 2 theta0 R (units R).
+pub const ARC_RANGE: (f64, f64) = (2e-3, PI);
+
+/// The latest time served, c2s t/R.
+pub const LATEST_TIME: f64 = 100.0;
+
+/// The most harmonic evaluations (frequencies times harmonics) one response may take.
+pub const WORK_LIMIT: f64 = 2e9;
+
+/// Highest frequency of the inversion, times theta0: the remainder's time structure is that
+/// of fronts smeared over an arc, of duration theta0/c.
+const OMEGA_THETA: f64 = 24.0;
+
+/// The lowest highest frequency (the structure of the disk's own reflections).
+const OMEGA_MIN: f64 = 400.0;
+
+/// The fewest frequencies of the inversion (for early last times, whose structure is at the
+/// scale of the time itself).
+const FREQUENCIES_MIN: f64 = 256.0;
+
+/// Harmonics kept per unit of the highest frequency.
+const HARMONICS_PER_OMEGA: f64 = 1.25;
+
+/// sigma T of the inversion: the aliased images weigh e^(-2 sigma T) = 1.5e-8 of the
+/// bounded remainder, the latest time's errors are amplified by e^(sigma T/2) = 90.
+const SIGMA_T: f64 = 9.0;
+
+/// The step response of a free disk to a pressure on an arc, averaged over arcs of the same
+/// width: [`Disk::arc_step_response`].
+#[derive(Clone, Debug)]
+pub struct ArcStepResponse {
+    /// The arc's width 2 theta0 (units R).
+    pub arc: f64,
+    /// The receiver arcs' centres (radians from the loaded arc's centre).
+    pub angles: Vec<f64>,
+    /// The times c2s t/R.
+    pub times: Vec<f64>,
+    /// The mean inward normal displacement, units p0 R/mu_s, `[angle][time]`.
+    pub total: Vec<Vec<f64>>,
+    /// `total` minus the rigid translation's mean over the receiver arc,
+    /// X(t) cos(theta_j) sin(theta0)/theta0, X = F t^2/(2 m), F = 2 p0 R sin(theta0),
+    /// m = pi R^2 rho_s.
+    pub deformation: Vec<Vec<f64>>,
+    /// A bound of each value's error (the same for both arrays; the translation is exact).
+    pub error: Vec<Vec<f64>>,
+    /// The harmonics summed in the remainder.
+    pub harmonics: usize,
+    /// The frequencies of its inversion.
+    pub frequencies: usize,
+}
+
+/// The half-plane's transfer function at wavenumber n: the Laplace transform of the inward
+/// normal surface displacement under the pressure cos(n x) (mu = 1, c2 = 1, c1 = `c1`),
+///
+/// ```text
+/// F = s^2 alpha / ((2 n^2 + s^2)^2 - 4 n^2 alpha beta)
+///   = alpha ((2 n^2 + q)^2 + 4 n^2 alpha beta) / P(q),   q = s^2,
+/// P = 16 n^6 (1 - 1/c1^2) + n^4 q (24 - 16/c1^2) + 8 n^2 q^2 + q^3,
+/// ```
+///
+/// alpha = sqrt(n^2 + q/c1^2), beta = sqrt(n^2 + q), the second form free of the
+/// cancellation of the first at small |s|/n (F -> 1/(c1 s) at n = 0, (1 - nu)/n as s -> 0).
+pub(crate) fn half_plane_transfer(c1: f64, n: f64, s: Complex64) -> Complex64 {
+    let q = s * s;
+    let n2 = n * n;
+    let ic2 = 1.0 / (c1 * c1);
+    let alpha = (q * ic2 + n2).sqrt();
+    let beta = (q + n2).sqrt();
+    let p = ((q + 8.0 * n2) * q + n2 * n2 * (24.0 - 16.0 * ic2)) * q
+        + 16.0 * n2 * n2 * n2 * (1.0 - ic2);
+    alpha * ((q + 2.0 * n2) * (q + 2.0 * n2) + alpha * beta * (4.0 * n2)) / p
+}
+
+fn sinc(x: f64) -> f64 {
+    if x.abs() < 1e-4 {
+        1.0 - x * x / 6.0
+    } else {
+        x.sin() / x
+    }
+}
+
+/// The remainder's transform at one s for every receiver: sum_n w_n E_n(s) over all the
+/// harmonics and over the first half of them, and a bound of its rounding.
+struct Sample {
+    full: Vec<Complex64>,
+    half: Vec<Complex64>,
+    rounding: f64,
+}
+
+impl Disk {
+    /// The inward normal surface displacement of the free disk (R = 1, mu_s = 1, rho_s = 1)
+    /// under the pressure p0 = 1 switched on at t = 0 over the arc |theta| <= arc/2, averaged
+    /// over the arc of the same width centred at each of `angles` (radians), at each of
+    /// `times` (c2s t/R), with a bound of each value's error (module docs; derivation in
+    /// `docs/strikers.md`, section 7). `arc` in [`ARC_RANGE`], times in (0, [`LATEST_TIME`]];
+    /// the work grows like t_max/arc^2 and is refused above [`WORK_LIMIT`].
+    pub fn arc_step_response(
+        &self,
+        arc: f64,
+        angles: &[f64],
+        times: &[f64],
+    ) -> Result<ArcStepResponse> {
+        self.arc_step_response_refined(arc, angles, times, 1.0)
+    }
+
+    /// [`Disk::arc_step_response`] with the inversion's highest frequency (and with it the
+    /// harmonics kept) multiplied by `refine` in [0.25, 16]: a finer or coarser computation
+    /// of the same quantity, to check the error estimates against.
+    pub fn arc_step_response_refined(
+        &self,
+        arc: f64,
+        angles: &[f64],
+        times: &[f64],
+        refine: f64,
+    ) -> Result<ArcStepResponse> {
+        if !(0.25..=16.0).contains(&refine) {
+            return Err(invalid("refinement", refine, "[0.25, 16]"));
+        }
+        if !(arc >= ARC_RANGE.0 && arc <= ARC_RANGE.1) {
+            return Err(invalid("arc over R", arc, format!("[{}, pi]", ARC_RANGE.0)));
+        }
+        if angles.is_empty() || times.is_empty() {
+            return Err(invalid(
+                "angles and times",
+                format!("{} angles, {} times", angles.len(), times.len()),
+                "at least one of each",
+            ));
+        }
+        if let Some(a) = angles.iter().find(|a| !a.is_finite()) {
+            return Err(invalid("angle", a, "finite"));
+        }
+        if let Some(t) = times.iter().find(|t| !(**t > 0.0 && **t <= LATEST_TIME)) {
+            return Err(invalid("c2 t/R", t, format!("(0, {LATEST_TIME}]")));
+        }
+        let c1 = self.c1();
+        let theta0 = 0.5 * arc;
+        let t_max = times.iter().copied().fold(0.0, f64::max);
+        // Durbin: f(t) = e^(sigma t)/T [F(sigma)/2 + Re sum_k F(sigma + i k pi/T) e^(i k pi t/T)]
+        // on (0, 2 T); the times lie in the first half
+        let period_half = 2.0 * t_max;
+        let omega = refine
+            * (OMEGA_THETA / theta0)
+                .max(OMEGA_MIN)
+                .max(FREQUENCIES_MIN * PI / period_half);
+        let nmax = (HARMONICS_PER_OMEGA * omega).ceil() as usize;
+        let sigma = SIGMA_T / period_half;
+        let kmax = (omega * period_half / PI).ceil() as usize;
+        let work = (kmax + 1) as f64 * (nmax as f64 + 2.0 * omega);
+        if work > WORK_LIMIT {
+            return Err(invalid(
+                "arc over R",
+                arc,
+                format!(
+                    "a wider arc or an earlier last time: {work:.2e} harmonic evaluations \
+                     needed, above the limit {WORK_LIMIT:.0e} (the work grows like t_max/arc^2)"
+                ),
+            ));
+        }
+        // the harmonics' weights p_n sinc(n theta0) (times 2 for n >= 1: cos n theta pairs
+        // the orders n and -n) and each receiver's cosines
+        let base: Vec<f64> = (0..=nmax)
+            .map(|n| {
+                let nf = n as f64;
+                if n == 0 {
+                    theta0 / PI
+                } else {
+                    2.0 * (nf * theta0).sin() / (nf * PI) * sinc(nf * theta0)
+                }
+            })
+            .collect();
+        let weights: Vec<Vec<f64>> = angles
+            .iter()
+            .map(|a| {
+                base.iter()
+                    .enumerate()
+                    .map(|(n, b)| b * (n as f64 * a).cos())
+                    .collect()
+            })
+            .collect();
+        let half_n = nmax / 2;
+        let sample = |k: usize| -> Sample {
+            let s = Complex64::new(sigma, k as f64 * PI / period_half);
+            let mut df = vec![Complex64::new(0.0, 0.0); nmax + 1];
+            let mut dg = vec![Complex64::new(0.0, 0.0); nmax + 1];
+            ratio_terms(s / c1, &mut df);
+            ratio_terms(s, &mut dg);
+            let y2 = s * s;
+            let pole = y2.inv();
+            let mut full = vec![Complex64::new(0.0, 0.0); angles.len()];
+            let mut half = full.clone();
+            let mut rounding = 0.0;
+            for n in 0..=nmax {
+                let nf = n as f64;
+                let w = transfer(nf, df[n], dg[n], y2);
+                let e = match n {
+                    0 => w,
+                    1 => w - half_plane_transfer(c1, nf, s) - pole,
+                    _ => w - half_plane_transfer(c1, nf, s),
+                };
+                rounding += base[n].abs() * (w.norm() + e.norm());
+                for (acc, wt) in full.iter_mut().zip(&weights) {
+                    *acc += e * wt[n];
+                }
+                if n == half_n {
+                    half.copy_from_slice(&full);
+                }
+            }
+            Sample {
+                full,
+                half,
+                rounding: 64.0 * f64::EPSILON * rounding,
+            }
+        };
+        let samples: Vec<Sample> = (0..=kmax).into_par_iter().map(sample).collect();
+        if samples.iter().any(|s| {
+            s.full
+                .iter()
+                .chain(&s.half)
+                .any(|v| !(v.re.is_finite() && v.im.is_finite()))
+        }) {
+            return Err(ImpactError::Step {
+                time: "0".into(),
+                reason: format!(
+                    "the disk's remainder transform is not finite at some frequency \
+                     (arc {arc}, last time {t_max})"
+                ),
+            });
+        }
+        let hp = HalfPlane::new(1.0 / c1)?;
+        let mut out = ArcStepResponse {
+            arc,
+            angles: angles.to_vec(),
+            times: times.to_vec(),
+            total: Vec::with_capacity(angles.len()),
+            deformation: Vec::with_capacity(angles.len()),
+            error: Vec::with_capacity(angles.len()),
+            harmonics: nmax + 1,
+            frequencies: kmax + 1,
+        };
+        let translation_weight = 2.0 * theta0.sin() / PI * sinc(theta0);
+        for (j, &angle) in angles.iter().enumerate() {
+            let mut row_total = Vec::with_capacity(times.len());
+            let mut row_def = Vec::with_capacity(times.len());
+            let mut row_err = Vec::with_capacity(times.len());
+            for &t in times {
+                // the remainder by Durbin's series, over all, half the frequencies and half
+                // the harmonics
+                let (mut all, mut few_harmonics, mut round) = (0.0, 0.0, 0.0);
+                // partial sums over the first 1/2, 5/8, 3/4 and 7/8 of the frequencies
+                let marks = [kmax / 2, 5 * kmax / 8, 3 * kmax / 4, 7 * kmax / 8];
+                let mut partial = [0.0; 4];
+                for (k, smp) in samples.iter().enumerate() {
+                    let s = Complex64::new(sigma, k as f64 * PI / period_half);
+                    let phase = Complex64::from_polar(1.0, s.im * t) / s;
+                    let factor = if k == 0 { 0.5 } else { 1.0 };
+                    let v = (smp.full[j] * phase).re * factor;
+                    all += v;
+                    for (p, m) in partial.iter_mut().zip(marks) {
+                        if k <= m {
+                            *p += v;
+                        }
+                    }
+                    few_harmonics += (smp.half[j] * phase).re * factor;
+                    round += smp.rounding * factor / s.norm();
+                }
+                let scale = (sigma * t).exp() / period_half;
+                let remainder = scale * all;
+                // the truncation in frequency: twice the largest change over the last half of
+                // the frequencies (the series converges like K^-1.5 or faster, so this bounds
+                // the rest unless the partial sums happen to cross: four marks guard that)
+                let err_frequencies =
+                    2.0 * scale * partial.iter().map(|p| (all - p).abs()).fold(0.0, f64::max);
+                let err_harmonics = scale * (all - few_harmonics).abs();
+                let err_rounding = scale * round;
+                let err_alias = (-2.0 * SIGMA_T).exp() * 10.0 * remainder.abs().max(theta0);
+                // the periodised half-plane, in its own units (c1 = 1: time c1s t)
+                let (images, err_images) = periodised_half_plane(&hp, theta0, angle, c1 * t)?;
+                let uniform = -theta0 / PI * t / c1;
+                let translation = translation_weight * (angle).cos() * 0.5 * t * t;
+                let deformation = images + remainder + uniform;
+                let total = deformation + translation;
+                let error = err_frequencies + err_harmonics + err_rounding + err_alias + err_images;
+                if !(total.is_finite() && error.is_finite()) {
+                    return Err(ImpactError::Step {
+                        time: format!("{t}"),
+                        reason: format!(
+                            "the disk's arc response is not finite at angle {angle} rad"
+                        ),
+                    });
+                }
+                row_total.push(total);
+                row_def.push(deformation);
+                row_err.push(error);
+            }
+            out.total.push(row_total);
+            out.deformation.push(row_def);
+            out.error.push(row_err);
+        }
+        Ok(out)
+    }
+}
+
+/// The half-plane's mean displacement over the strip of half-width theta0 centred at
+/// `angle` (arc length), due to the unit pressure on the strip |x| <= theta0 switched on at
+/// time 0, summed over the images angle + 2 pi m, at `time` in the Lamb crate's units
+/// (c1 = 1, mu = 1): with Xi the triple primitive, each image is
+/// [Xi(d + 2 theta0) - 2 Xi(d) + Xi(d - 2 theta0)]/(2 theta0); images beyond the P front
+/// give 0 exactly (Xi is linear in X there). Returns the value and its error bound.
+fn periodised_half_plane(
+    hp: &HalfPlane<f64>,
+    theta0: f64,
+    angle: f64,
+    time: f64,
+) -> Result<(f64, f64)> {
+    let centred = angle - 2.0 * PI * (angle / (2.0 * PI)).round();
+    let reach = time + 2.0 * theta0;
+    let mmax = ((reach + PI) / (2.0 * PI)).ceil() as i64;
+    let (mut value, mut error) = (0.0, 0.0);
+    for m in -mmax..=mmax {
+        let d = centred + 2.0 * PI * m as f64;
+        if d.abs() >= reach {
+            continue;
+        }
+        for (x, c) in [(d + 2.0 * theta0, 1.0), (d, -2.0), (d - 2.0 * theta0, 1.0)] {
+            let xi = hp.cell_mean_primitive_zz(&x, &time)?;
+            value += c * xi.value;
+            error += c.abs() * xi.error;
+        }
+    }
+    Ok((value / (2.0 * theta0), error / (2.0 * theta0)))
+}
