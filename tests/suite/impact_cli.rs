@@ -987,3 +987,115 @@ fn run_states_its_memory_need_and_the_limit_holds_it() {
         }
     }
 }
+
+/// `impact striker-green`: the keys, arrays [angle][time] equal to the library's, the
+/// deformation the total minus the arc-averaged translation in closed form, every value with
+/// its estimate; refusals in one line naming the flag.
+#[test]
+fn striker_green_prints_the_cylinder_response_with_its_keys() {
+    let v = json(&[
+        "striker-green",
+        "--striker",
+        "cylinder",
+        "--poisson",
+        "0.25",
+        "--arc-over-R",
+        "0.05",
+        "--at-deg",
+        "0,2.8648,90,180",
+        "--times",
+        "c2t/R=0.1,1,3",
+        "--json",
+    ]);
+    for key in [
+        "c2t_over_R",
+        "angle_deg",
+        "w_over_p0R_mu",
+        "w_def_over_p0R_mu",
+        "error_estimate",
+    ] {
+        assert!(v.get(key).is_some(), "{key} missing");
+    }
+    let times: Vec<f64> = serde_json::from_value(v["c2t_over_R"].clone()).unwrap();
+    let angles: Vec<f64> = serde_json::from_value(v["angle_deg"].clone()).unwrap();
+    assert_eq!(times, [0.1, 1.0, 3.0]);
+    assert_eq!(angles, [0.0, 2.8648, 90.0, 180.0]);
+    let w: Vec<Vec<f64>> = serde_json::from_value(v["w_over_p0R_mu"].clone()).unwrap();
+    let d: Vec<Vec<f64>> = serde_json::from_value(v["w_def_over_p0R_mu"].clone()).unwrap();
+    let e: Vec<Vec<f64>> =
+        serde_json::from_value(v["error_estimate"]["w_over_p0R_mu"].clone()).unwrap();
+    let ed: Vec<Vec<f64>> =
+        serde_json::from_value(v["error_estimate"]["w_def_over_p0R_mu"].clone()).unwrap();
+    let disk = impact::striker::disk::Disk::new(0.25).unwrap();
+    let radians: Vec<f64> = angles.iter().map(|a| a.to_radians()).collect();
+    let lib = disk.arc_step_response(0.05, &radians, &times).unwrap();
+    let theta0: f64 = 0.025;
+    for j in 0..4 {
+        assert_eq!(w[j].len(), 3);
+        for i in 0..3 {
+            assert_eq!(w[j][i], lib.total[j][i]);
+            assert_eq!(e[j][i], lib.error[j][i]);
+            assert_eq!(ed[j][i], e[j][i]);
+            assert!(e[j][i] > 0.0 && e[j][i] < 1e-5, "{j} {i}: {}", e[j][i]);
+            // X = F t^2/(2 m), F = 2 sin(theta0), m = pi
+            let x = 2.0 * theta0.sin() * times[i] * times[i] / (2.0 * std::f64::consts::PI);
+            let mean = x * radians[j].cos() * theta0.sin() / theta0;
+            assert!((w[j][i] - d[j][i] - mean).abs() < 1e-15, "{j} {i}");
+        }
+    }
+    // nothing has reached the far side at c2 t/R = 1 (the P wave needs 2 sin(...)/c1s)
+    assert!(w[3][1].abs() <= e[3][1]);
+    // CSV: a header and one row per angle and time
+    let (code, out, _) = impact(&[
+        "striker-green",
+        "--poisson",
+        "0.25",
+        "--arc-over-R",
+        "0.05",
+        "--at-deg",
+        "0,10",
+        "--times",
+        "c2t/R=0.5",
+    ]);
+    assert_eq!(code, 0);
+    let rows: Vec<&str> = out.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(
+        rows[0],
+        "angle_deg,c2t_over_R,w_over_p0R_mu,w_def_over_p0R_mu,error_estimate"
+    );
+    assert_eq!(rows.len(), 3);
+    for (args, flag) in [
+        (vec!["--arc-over-R", "0.0001"], "arc"),
+        (vec!["--arc-over-R", "5"], "arc"),
+        (vec!["--times", "c2t/R=0"], "c2 t/R"),
+        (vec!["--times", "c2t/R=200"], "c2 t/R"),
+        (vec!["--times", "c1t/R=1"], "--times"),
+        (vec!["--at-deg", "a"], "--at-deg"),
+        (vec!["--striker", "shell"], "--striker"),
+        (vec!["--poisson", "0.6"], "poisson"),
+    ] {
+        let mut argv = vec![
+            "striker-green",
+            "--poisson",
+            "0.25",
+            "--arc-over-R",
+            "0.05",
+            "--at-deg",
+            "0",
+            "--times",
+            "c2t/R=1",
+        ];
+        // the later flag replaces the earlier: drop the default pair first
+        if let Some(p) = argv.iter().position(|a| *a == args[0]) {
+            argv.drain(p..p + 2);
+        }
+        argv.extend(args.iter());
+        let (code, _, err) = impact(&argv);
+        assert_eq!(code, 2, "{argv:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{argv:?}: {err}");
+        assert!(
+            err.to_lowercase().contains(&flag.to_lowercase()),
+            "{argv:?}: {err}"
+        );
+    }
+}

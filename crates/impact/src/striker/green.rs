@@ -56,8 +56,12 @@ const FREQUENCIES_MIN: f64 = 256.0;
 /// Harmonics kept per unit of the highest frequency.
 const HARMONICS_PER_OMEGA: f64 = 1.25;
 
+/// The half-period T of the inversion over the last time: the errors of the series are
+/// amplified by e^(sigma t) <= e^(sigma T/4) at the times asked for.
+const PERIOD_OVER_T: f64 = 4.0;
+
 /// sigma T of the inversion: the aliased images weigh e^(-2 sigma T) = 1.5e-8 of the
-/// bounded remainder, the latest time's errors are amplified by e^(sigma T/2) = 90.
+/// bounded remainder, the latest time's errors are amplified by e^(sigma T/4) = 9.5.
 const SIGMA_T: f64 = 9.0;
 
 /// The step response of a free disk to a pressure on an arc, averaged over arcs of the same
@@ -172,7 +176,7 @@ impl Disk {
         let t_max = times.iter().copied().fold(0.0, f64::max);
         // Durbin: f(t) = e^(sigma t)/T [F(sigma)/2 + Re sum_k F(sigma + i k pi/T) e^(i k pi t/T)]
         // on (0, 2 T); the times lie in the first half
-        let period_half = 2.0 * t_max;
+        let period_half = PERIOD_OVER_T * t_max;
         let omega = refine
             * (OMEGA_THETA / theta0)
                 .max(OMEGA_MIN)

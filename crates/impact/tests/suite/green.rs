@@ -77,7 +77,7 @@ fn nothing_arrives_before_the_p_wave() {
                 w.abs() <= e,
                 "angle {a} t {t}: {w} against its estimate {e}"
             );
-            assert!(e < 5e-5 * peak, "angle {a} t {t}: estimate {e}");
+            assert!(e < 1e-4 * peak, "angle {a} t {t}: estimate {e}");
             // the parts are not small: the deformation is minus the translation there
             if *t >= 0.5 && a.cos().abs() > 0.5 {
                 assert!(def.abs() > 1e3 * e, "angle {a} t {t}: {def}");
