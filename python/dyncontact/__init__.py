@@ -6,7 +6,7 @@ its error estimate:
 - :mod:`dyncontact.wedge`: the self-similar indentation by a rigid wedge with friction and
   displacement coupling (``solve``, ``stress``, ``field``, ``curve``);
 - :mod:`dyncontact.impact`: the transient impact of rigid, elastic and thin-shell strikers
-  (``run``, ``edge``), and :mod:`dyncontact.lamb`: Lamb's surface influence functions
+  (``run``, ``edge``, ``striker_green``), and :mod:`dyncontact.lamb`: Lamb's surface influence functions
   (``green``).
 
 Every call takes the command line's flags as keyword arguments (``theta_deg=86`` is

@@ -17,16 +17,31 @@ from __future__ import annotations
 import numbers
 from typing import Any, Optional, Sequence, Union
 
+import numpy as np
+
 from . import _args, _dyncontact, _progress
 from ._result import Report, RunResult
 from ._types import Number
 
-__all__ = ["run", "edge", "RunResult", "EdgeResult"]
+__all__ = ["run", "edge", "striker_green", "RunResult", "EdgeResult", "StrikerGreenResult"]
 
 
 class EdgeResult(Report):
     """``impact.edge``: ``records``, one per edge speed, with the exponents lambda of
     p ~ d^lambda, the selected one, and the gap coefficients (docs/edge.md)."""
+
+
+class StrikerGreenResult(Report):
+    """``impact.striker_green``: ``c2t_over_R``, ``angle_deg``, the 2-D float64 arrays
+    [angle][time] ``w_over_p0R_mu`` and ``w_def_over_p0R_mu``, and ``error_estimate`` with
+    both (docs/strikers.md, section 7)."""
+
+    def _init(self, text: str, data: Any, decimal: bool) -> None:
+        super()._init(text, data, decimal)
+        grid = lambda rows: np.array(rows, dtype=np.float64)  # noqa: E731
+        for key in ("w_over_p0R_mu", "w_def_over_p0R_mu"):
+            self._values[key] = grid(data[key])
+            self._values["error_estimate"][key] = grid(data["error_estimate"][key])
 
 
 def _time(parameter: str, value: Any) -> Any:
@@ -93,3 +108,24 @@ def edge(
     D/c1 of ``speed_over_c1`` (``impact edge``), for the edge ``law``."""
     kw = dict(locals())  # the keyword arguments, in the signature's order
     return EdgeResult(_dyncontact.impact(_args.argv("edge", kw, lists=("speed_over_c1",))))
+
+
+def striker_green(
+    *,
+    arc_over_R: Number,
+    at_deg: Union[str, Sequence[Number], Number],
+    times: Union[str, Sequence[Number], Number],
+    striker: str = "cylinder",
+    c1: Optional[Number] = None,
+    c2: Optional[Number] = None,
+    poisson: Optional[Number] = None,
+) -> StrikerGreenResult:
+    """A free elastic cylinder's own influence function (``impact striker-green``): the mean
+    inward normal surface displacement over arcs of width ``arc_over_R`` centred at the angles
+    ``at_deg`` (degrees), under a unit pressure switched on at t = 0 over the arc at 0, at the
+    ``times`` c2 t/R (numbers, or the flag's text ``"c2t/R=..."``); the striker's material by
+    its ``poisson`` or its ``c1``, ``c2`` (m/s). Units R = 1, mu_s = 1, rho_s = 1."""
+    if not isinstance(times, str):
+        times = "c2t/R=" + _args.listed("times", times)
+    kw = dict(locals())  # the keyword arguments, in the signature's order
+    return StrikerGreenResult(_dyncontact.impact(_args.argv("striker-green", kw, lists=("at_deg",))))

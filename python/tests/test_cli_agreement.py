@@ -119,6 +119,21 @@ def test_impact_edge_agrees_with_the_cli(cli, law):
     assert r.records.speed_over_c1.tolist() == [0.3, 0.55, 0.7, 1.4]
 
 
+def test_impact_striker_green_agrees_with_the_cli(cli):
+    expected = cli_json(
+        cli("impact", "striker-green", "--poisson", "0.25", "--arc-over-R", "0.1", "--at-deg", "0,5.73,180", "--times", "c2t/R=0.1,1", "--json"),
+        False,
+    )
+    r = dyncontact.impact.striker_green(poisson=0.25, arc_over_R=0.1, at_deg=[0, 5.73, 180], times=[0.1, 1])
+    same_bits(expected, r.to_dict())
+    assert r.w_over_p0R_mu.shape == (3, 2)
+    # the deformation is the total without the translation's mean over the arc
+    theta0 = 0.05
+    x = 2 * np.sin(theta0) * np.asarray([0.1, 1.0]) ** 2 / (2 * np.pi)
+    mean = np.outer(np.cos(np.radians([0, 5.73, 180])), x) * np.sin(theta0) / theta0
+    assert np.allclose(r.w_over_p0R_mu - r.w_def_over_p0R_mu, mean, rtol=0, atol=1e-15)
+
+
 @pytest.mark.parametrize("digits", [None, 40])
 def test_lamb_green_agrees_with_the_cli(cli, digits):
     extra = [] if digits is None else ["--digits", str(digits)]
