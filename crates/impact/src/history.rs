@@ -104,17 +104,17 @@ pub(crate) struct HistorySum<T = f64> {
 /// The FFT planner behind non-generic calls: the planner's code is compiled once, here, not
 /// again in every crate that instantiates [`HistorySum`] (its generic code is most of a
 /// test binary's).
-struct Planner(FftPlanner<f64>);
+pub(crate) struct Planner(FftPlanner<f64>);
 
 impl Planner {
     #[inline(never)]
-    fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Planner(FftPlanner::new())
     }
 
     /// Plans for size n (forward and inverse).
     #[inline(never)]
-    fn plans(&mut self, n: usize) -> (Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>) {
+    pub(crate) fn plans(&mut self, n: usize) -> (Arc<dyn Fft<f64>>, Arc<dyn Fft<f64>>) {
         (self.0.plan_fft_forward(n), self.0.plan_fft_inverse(n))
     }
 }

@@ -88,6 +88,23 @@ pub struct ArcStepResponse {
     pub frequencies: usize,
 }
 
+/// The deformation step response of a free disk on a lattice of arcs and times:
+/// [`Disk::lattice_step_response`], the building block of a cylinder striker's cell
+/// coefficients.
+#[derive(Clone, Debug)]
+pub struct LatticeStepResponse {
+    /// The arcs' width (units R), also the lattice's spacing in angle.
+    pub dx: f64,
+    /// The time step (units R/c2s).
+    pub dt: f64,
+    /// The deformation (the total without the rigid translation's mean, as
+    /// [`ArcStepResponse::deformation`]) over the receiver arc centred at k dx at the time
+    /// l dt, `[k][l]`, l = 0 ..= steps (0 at l = 0).
+    pub deformation: Vec<Vec<f64>>,
+    /// A bound of each value's error.
+    pub error: Vec<Vec<f64>>,
+}
+
 /// The half-plane's transfer function at wavenumber n: the Laplace transform of the inward
 /// normal surface displacement under the pressure cos(n x) (mu = 1, c2 = 1, c1 = `c1`),
 ///
@@ -174,99 +191,9 @@ impl Disk {
         let c1 = self.c1();
         let theta0 = 0.5 * arc;
         let t_max = times.iter().copied().fold(0.0, f64::max);
-        // Durbin: f(t) = e^(sigma t)/T [F(sigma)/2 + Re sum_k F(sigma + i k pi/T) e^(i k pi t/T)]
-        // on (0, 2 T); the times lie in the first half
-        let period_half = PERIOD_OVER_T * t_max;
-        let omega = refine
-            * (OMEGA_THETA / theta0)
-                .max(OMEGA_MIN)
-                .max(FREQUENCIES_MIN * PI / period_half);
-        let nmax = (HARMONICS_PER_OMEGA * omega).ceil() as usize;
-        let sigma = SIGMA_T / period_half;
-        let kmax = (omega * period_half / PI).ceil() as usize;
-        let work = (kmax + 1) as f64 * (nmax as f64 + 2.0 * omega);
-        if work > WORK_LIMIT {
-            return Err(invalid(
-                "arc over R",
-                arc,
-                format!(
-                    "a wider arc or an earlier last time: {work:.2e} harmonic evaluations \
-                     needed, above the limit {WORK_LIMIT:.0e} (the work grows like t_max/arc^2)"
-                ),
-            ));
-        }
-        // the harmonics' weights p_n sinc(n theta0) (times 2 for n >= 1: cos n theta pairs
-        // the orders n and -n) and each receiver's cosines
-        let base: Vec<f64> = (0..=nmax)
-            .map(|n| {
-                let nf = n as f64;
-                if n == 0 {
-                    theta0 / PI
-                } else {
-                    2.0 * (nf * theta0).sin() / (nf * PI) * sinc(nf * theta0)
-                }
-            })
-            .collect();
-        let weights: Vec<Vec<f64>> = angles
-            .iter()
-            .map(|a| {
-                base.iter()
-                    .enumerate()
-                    .map(|(n, b)| b * (n as f64 * a).cos())
-                    .collect()
-            })
-            .collect();
-        // the harmonics' terms fall like n^-4: the last quarter changes the sum by about 1.4
-        // times what the harmonics beyond N would
-        let half_n = 3 * nmax / 4;
-        let sample = |k: usize| -> Sample {
-            let s = Complex64::new(sigma, k as f64 * PI / period_half);
-            let mut df = vec![Complex64::new(0.0, 0.0); nmax + 1];
-            let mut dg = vec![Complex64::new(0.0, 0.0); nmax + 1];
-            ratio_terms(s / c1, &mut df);
-            ratio_terms(s, &mut dg);
-            let y2 = s * s;
-            let pole = y2.inv();
-            let mut full = vec![Complex64::new(0.0, 0.0); angles.len()];
-            let mut half = full.clone();
-            let mut rounding = 0.0;
-            for n in 0..=nmax {
-                let nf = n as f64;
-                let w = transfer(nf, df[n], dg[n], y2);
-                let e = match n {
-                    0 => w,
-                    1 => w - half_plane_transfer(c1, nf, s) - pole,
-                    _ => w - half_plane_transfer(c1, nf, s),
-                };
-                rounding += base[n].abs() * (w.norm() + e.norm());
-                for (acc, wt) in full.iter_mut().zip(&weights) {
-                    *acc += e * wt[n];
-                }
-                if n == half_n {
-                    half.copy_from_slice(&full);
-                }
-            }
-            Sample {
-                full,
-                half,
-                rounding: 64.0 * f64::EPSILON * rounding,
-            }
-        };
-        let samples: Vec<Sample> = (0..=kmax).into_par_iter().map(sample).collect();
-        if samples.iter().any(|s| {
-            s.full
-                .iter()
-                .chain(&s.half)
-                .any(|v| !(v.re.is_finite() && v.im.is_finite()))
-        }) {
-            return Err(ImpactError::Step {
-                time: "0".into(),
-                reason: format!(
-                    "the disk's remainder transform is not finite at some frequency \
-                     (arc {arc}, last time {t_max})"
-                ),
-            });
-        }
+        let inv = Inversion::new(theta0, PERIOD_OVER_T * t_max, refine, arc, t_max)?;
+        let samples = self.remainder_samples(theta0, angles, &inv)?;
+        let (sigma, period_half, kmax, nmax) = (inv.sigma, inv.period_half, inv.kmax, inv.nmax);
         let hp = HalfPlane::new(1.0 / c1)?;
         let mut out = ArcStepResponse {
             arc,
@@ -341,6 +268,141 @@ impl Disk {
     }
 }
 
+/// The parameters of the remainder's Fourier inversion (module docs): the half-period T,
+/// sigma = SIGMA_T/T, the frequencies k pi/T for k = 0..=kmax, the harmonics 0..=nmax.
+struct Inversion {
+    period_half: f64,
+    sigma: f64,
+    kmax: usize,
+    nmax: usize,
+}
+
+impl Inversion {
+    /// For arcs of half-width `theta0` and the half-period `period_half`, the highest
+    /// frequency multiplied by `refine`; refused (naming the arc) above [`WORK_LIMIT`].
+    fn new(theta0: f64, period_half: f64, refine: f64, arc: f64, t_max: f64) -> Result<Self> {
+        let omega = refine
+            * (OMEGA_THETA / theta0)
+                .max(OMEGA_MIN)
+                .max(FREQUENCIES_MIN * PI / period_half);
+        let nmax = (HARMONICS_PER_OMEGA * omega).ceil() as usize;
+        let kmax = (omega * period_half / PI).ceil() as usize;
+        let work = (kmax + 1) as f64 * (nmax as f64 + 2.0 * omega);
+        if work > WORK_LIMIT {
+            return Err(invalid(
+                "arc over R",
+                arc,
+                format!(
+                    "a wider arc or an earlier last time than {t_max}: {work:.2e} harmonic \
+                     evaluations needed, above the limit {WORK_LIMIT:.0e} (the work grows like \
+                     t_max/arc^2)"
+                ),
+            ));
+        }
+        Ok(Inversion {
+            period_half,
+            sigma: SIGMA_T / period_half,
+            kmax,
+            nmax,
+        })
+    }
+
+    /// The k-th frequency's s.
+    fn s(&self, k: usize) -> Complex64 {
+        Complex64::new(self.sigma, k as f64 * PI / self.period_half)
+    }
+}
+
+impl Disk {
+    /// The remainder's transform sum_n w_n E_n(s) (over all the harmonics and over three
+    /// quarters of them) at every frequency of `inv`, for the receiver arcs centred at
+    /// `angles` (module docs), in parallel over the frequencies.
+    fn remainder_samples(
+        &self,
+        theta0: f64,
+        angles: &[f64],
+        inv: &Inversion,
+    ) -> Result<Vec<Sample>> {
+        let c1 = self.c1();
+        let nmax = inv.nmax;
+        // the harmonics' weights p_n sinc(n theta0) (times 2 for n >= 1: cos n theta pairs
+        // the orders n and -n) and each receiver's cosines
+        let base: Vec<f64> = (0..=nmax)
+            .map(|n| {
+                let nf = n as f64;
+                if n == 0 {
+                    theta0 / PI
+                } else {
+                    2.0 * (nf * theta0).sin() / (nf * PI) * sinc(nf * theta0)
+                }
+            })
+            .collect();
+        let weights: Vec<Vec<f64>> = angles
+            .iter()
+            .map(|a| {
+                base.iter()
+                    .enumerate()
+                    .map(|(n, b)| b * (n as f64 * a).cos())
+                    .collect()
+            })
+            .collect();
+        // the harmonics' terms fall like n^-4: the last quarter changes the sum by about 1.4
+        // times what the harmonics beyond N would
+        let half_n = 3 * nmax / 4;
+        let sample = |k: usize| -> Sample {
+            let s = inv.s(k);
+            let mut df = vec![Complex64::new(0.0, 0.0); nmax + 1];
+            let mut dg = vec![Complex64::new(0.0, 0.0); nmax + 1];
+            ratio_terms(s / c1, &mut df);
+            ratio_terms(s, &mut dg);
+            let y2 = s * s;
+            let pole = y2.inv();
+            let mut full = vec![Complex64::new(0.0, 0.0); angles.len()];
+            let mut half = full.clone();
+            let mut rounding = 0.0;
+            for n in 0..=nmax {
+                let nf = n as f64;
+                let w = transfer(nf, df[n], dg[n], y2);
+                let e = match n {
+                    0 => w,
+                    1 => w - half_plane_transfer(c1, nf, s) - pole,
+                    _ => w - half_plane_transfer(c1, nf, s),
+                };
+                rounding += base[n].abs() * (w.norm() + e.norm());
+                for (acc, wt) in full.iter_mut().zip(&weights) {
+                    *acc += e * wt[n];
+                }
+                if n == half_n {
+                    half.copy_from_slice(&full);
+                }
+            }
+            Sample {
+                full,
+                half,
+                rounding: 64.0 * f64::EPSILON * rounding,
+            }
+        };
+        let samples: Vec<Sample> = (0..=inv.kmax).into_par_iter().map(sample).collect();
+        if samples.iter().any(|s| {
+            s.full
+                .iter()
+                .chain(&s.half)
+                .any(|v| !(v.re.is_finite() && v.im.is_finite()))
+        }) {
+            return Err(ImpactError::Step {
+                time: "0".into(),
+                reason: format!(
+                    "the disk's remainder transform is not finite at some frequency \
+                     (arc {}, half-period {})",
+                    2.0 * theta0,
+                    inv.period_half
+                ),
+            });
+        }
+        Ok(samples)
+    }
+}
+
 /// The half-plane's mean displacement over the strip of half-width theta0 centred at
 /// `angle` (arc length), due to the unit pressure on the strip |x| <= theta0 switched on at
 /// time 0, summed over the images angle + 2 pi m, at `time` in the Lamb crate's units
@@ -369,4 +431,108 @@ fn periodised_half_plane(
         }
     }
     Ok((value / (2.0 * theta0), error / (2.0 * theta0)))
+}
+
+impl Disk {
+    /// The deformation step response ([`ArcStepResponse::deformation`]) for arcs of width `dx`
+    /// centred at the offsets k dx, k = 0 ..= `offsets`, at the times l dt, l = 0 ..= `steps`
+    /// (units of [`Disk`]): the march's lattice. The same construction as
+    /// [`Disk::arc_step_response`], its Fourier series summed at every time at once: the
+    /// half-period is chosen as M dt/2 with M an integer, so the series at t_l is the inverse
+    /// discrete Fourier transform of length M of the frequency samples folded modulo M.
+    pub fn lattice_step_response(
+        &self,
+        dx: f64,
+        dt: f64,
+        offsets: usize,
+        steps: usize,
+    ) -> Result<LatticeStepResponse> {
+        if !(dx >= ARC_RANGE.0 && dx <= ARC_RANGE.1) {
+            return Err(invalid("arc over R", dx, format!("[{}, pi]", ARC_RANGE.0)));
+        }
+        if !(dt > 0.0 && dt.is_finite() && steps >= 1 && steps as f64 * dt <= LATEST_TIME) {
+            return Err(invalid(
+                "c2 t/R",
+                steps as f64 * dt,
+                format!("(0, {LATEST_TIME}] (steps times dt)"),
+            ));
+        }
+        if offsets > 100_000 {
+            return Err(invalid("angle", offsets, "offsets 0..=100000"));
+        }
+        let c1 = self.c1();
+        let theta0 = 0.5 * dx;
+        let t_max = steps as f64 * dt;
+        let m = (2.0 * PERIOD_OVER_T * steps as f64).ceil() as usize;
+        let inv = Inversion::new(theta0, 0.5 * m as f64 * dt, 1.0, dx, t_max)?;
+        let angles: Vec<f64> = (0..=offsets).map(|k| k as f64 * dx).collect();
+        let samples = self.remainder_samples(theta0, &angles, &inv)?;
+        let kmax = inv.kmax;
+        let marks = [kmax / 2, 5 * kmax / 8, 3 * kmax / 4, 7 * kmax / 8];
+        let round: f64 = samples
+            .iter()
+            .enumerate()
+            .map(|(k, smp)| smp.rounding * if k == 0 { 0.5 } else { 1.0 } / inv.s(k).norm())
+            .sum();
+        let (_, inverse) = crate::history::Planner::new().plans(m);
+        let hp = HalfPlane::new(1.0 / c1)?;
+        let zero = Complex64::new(0.0, 0.0);
+        let mut out = LatticeStepResponse {
+            dx,
+            dt,
+            deformation: Vec::with_capacity(offsets + 1),
+            error: Vec::with_capacity(offsets + 1),
+        };
+        for (j, &angle) in angles.iter().enumerate() {
+            // folded series: all frequencies, the four partial sums, three quarters of the
+            // harmonics
+            let mut series = vec![vec![zero; m]; 6];
+            for (k, smp) in samples.iter().enumerate() {
+                let f = if k == 0 { 0.5 } else { 1.0 } / inv.s(k);
+                let (full, few) = (smp.full[j] * f, smp.half[j] * f);
+                let r = k % m;
+                series[0][r] += full;
+                for (i, mark) in marks.iter().enumerate() {
+                    if k <= *mark {
+                        series[1 + i][r] += full;
+                    }
+                }
+                series[5][r] += few;
+            }
+            for s in series.iter_mut() {
+                inverse.process(s);
+            }
+            let mut row = Vec::with_capacity(steps + 1);
+            let mut err = Vec::with_capacity(steps + 1);
+            row.push(0.0);
+            err.push(0.0);
+            for l in 1..=steps {
+                let t = l as f64 * dt;
+                let scale = (inv.sigma * t).exp() / inv.period_half;
+                let all = series[0][l].re;
+                let remainder = scale * all;
+                let err_frequencies = 2.0
+                    * scale
+                    * (1..5)
+                        .map(|i| (all - series[i][l].re).abs())
+                        .fold(0.0, f64::max);
+                let err_harmonics = scale * (all - series[5][l].re).abs();
+                let err_alias = (-2.0 * SIGMA_T).exp() * 10.0 * remainder.abs().max(theta0);
+                let (images, err_images) = periodised_half_plane(&hp, theta0, angle, c1 * t)?;
+                let value = images + remainder - theta0 / PI * t / c1;
+                let e = err_frequencies + err_harmonics + scale * round + err_alias + err_images;
+                if !(value.is_finite() && e.is_finite()) {
+                    return Err(ImpactError::Step {
+                        time: format!("{t}"),
+                        reason: format!("the disk's lattice response is not finite at offset {j}"),
+                    });
+                }
+                row.push(value);
+                err.push(e);
+            }
+            out.deformation.push(row);
+            out.error.push(err);
+        }
+        Ok(out)
+    }
 }

@@ -235,3 +235,26 @@ fn against_the_reference(last: f64) {
         eprintln!("arc {arc}: largest difference {worst:.2e} of the peak {peak:.4}");
     }
 }
+
+/// The lattice (all times at once through a discrete Fourier transform) equals the pointwise
+/// response at its points, and its estimates are the pointwise ones.
+#[test]
+fn the_lattice_equals_the_pointwise_response() {
+    let disk = Disk::new(0.25).unwrap();
+    let (dx, dt) = (0.05, 0.02);
+    let lat = disk.lattice_step_response(dx, dt, 4, 100).unwrap();
+    let angles: Vec<f64> = (0..=4).map(|k| k as f64 * dx).collect();
+    let times: Vec<f64> = [1usize, 7, 50, 100]
+        .iter()
+        .map(|l| *l as f64 * dt)
+        .collect();
+    let r = disk.arc_step_response(dx, &angles, &times).unwrap();
+    for (j, _) in angles.iter().enumerate() {
+        assert_eq!(lat.deformation[j][0], 0.0);
+        for (i, l) in [1usize, 7, 50, 100].iter().enumerate() {
+            let (a, b) = (lat.deformation[j][*l], r.deformation[j][i]);
+            assert!((a - b).abs() <= 1e-12, "{j} {l}: {a} {b}");
+            assert!((lat.error[j][*l] / r.error[j][i] - 1.0).abs() < 1e-6);
+        }
+    }
+}
