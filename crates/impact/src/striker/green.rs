@@ -506,17 +506,17 @@ impl Disk {
             let mut err = Vec::with_capacity(steps + 1);
             row.push(0.0);
             err.push(0.0);
-            for l in 1..=steps {
+            let columns: Vec<[f64; 6]> = (0..=steps)
+                .map(|l| std::array::from_fn(|i| series[i][l].re))
+                .collect();
+            for (l, at) in columns.iter().enumerate().skip(1) {
                 let t = l as f64 * dt;
                 let scale = (inv.sigma * t).exp() / inv.period_half;
-                let all = series[0][l].re;
+                let all = at[0];
                 let remainder = scale * all;
-                let err_frequencies = 2.0
-                    * scale
-                    * (1..5)
-                        .map(|i| (all - series[i][l].re).abs())
-                        .fold(0.0, f64::max);
-                let err_harmonics = scale * (all - series[5][l].re).abs();
+                let err_frequencies =
+                    2.0 * scale * at[1..5].iter().map(|p| (all - p).abs()).fold(0.0, f64::max);
+                let err_harmonics = scale * (all - at[5]).abs();
                 let err_alias = (-2.0 * SIGMA_T).exp() * 10.0 * remainder.abs().max(theta0);
                 let (images, err_images) = periodised_half_plane(&hp, theta0, angle, c1 * t)?;
                 let value = images + remainder - theta0 / PI * t / c1;
