@@ -193,7 +193,7 @@ impl Disk {
         let t_max = times.iter().copied().fold(0.0, f64::max);
         let inv = Inversion::new(theta0, PERIOD_OVER_T * t_max, refine, arc, t_max)?;
         let samples = self.remainder_samples(theta0, angles, &inv)?;
-        let (sigma, period_half, kmax, nmax) = (inv.sigma, inv.period_half, inv.kmax, inv.nmax);
+        let (kmax, nmax) = (inv.kmax, inv.nmax);
         let hp = HalfPlane::new(1.0 / c1)?;
         let mut out = ArcStepResponse {
             arc,
@@ -211,14 +211,14 @@ impl Disk {
             let mut row_def = Vec::with_capacity(times.len());
             let mut row_err = Vec::with_capacity(times.len());
             for &t in times {
-                // the remainder by Durbin's series, over all, half the frequencies and half
-                // the harmonics
+                // the remainder by Durbin's series, over all frequencies, up to each mark,
+                // and over three quarters of the harmonics
                 let (mut all, mut few_harmonics, mut round) = (0.0, 0.0, 0.0);
                 // partial sums over the first 1/2, 5/8, 3/4 and 7/8 of the frequencies
                 let marks = [kmax / 2, 5 * kmax / 8, 3 * kmax / 4, 7 * kmax / 8];
                 let mut partial = [0.0; 4];
                 for (k, smp) in samples.iter().enumerate() {
-                    let s = Complex64::new(sigma, k as f64 * PI / period_half);
+                    let s = inv.s(k);
                     let phase = Complex64::from_polar(1.0, s.im * t) / s;
                     let factor = if k == 0 { 0.5 } else { 1.0 };
                     let v = (smp.full[j] * phase).re * factor;
@@ -231,31 +231,18 @@ impl Disk {
                     few_harmonics += (smp.half[j] * phase).re * factor;
                     round += smp.rounding * factor / s.norm();
                 }
-                let scale = (sigma * t).exp() / period_half;
-                let remainder = scale * all;
-                // the truncation in frequency: twice the largest change over the last half of
-                // the frequencies (the series converges like K^-1.5 or faster, so this bounds
-                // the rest unless the partial sums happen to cross: four marks guard that)
-                let err_frequencies =
-                    2.0 * scale * partial.iter().map(|p| (all - p).abs()).fold(0.0, f64::max);
-                let err_harmonics = scale * (all - few_harmonics).abs();
-                let err_rounding = scale * round;
-                let err_alias = (-2.0 * SIGMA_T).exp() * 10.0 * remainder.abs().max(theta0);
-                // the periodised half-plane, in its own units (c1 = 1: time c1s t)
-                let (images, err_images) = periodised_half_plane(&hp, theta0, angle, c1 * t)?;
-                let uniform = -theta0 / PI * t / c1;
+                let series = [
+                    all,
+                    partial[0],
+                    partial[1],
+                    partial[2],
+                    partial[3],
+                    few_harmonics,
+                ];
+                let (deformation, error) =
+                    inv.deformation(&series, round, t, theta0, angle, c1, &hp)?;
                 let translation = translation_weight * (angle).cos() * 0.5 * t * t;
-                let deformation = images + remainder + uniform;
                 let total = deformation + translation;
-                let error = err_frequencies + err_harmonics + err_rounding + err_alias + err_images;
-                if !(total.is_finite() && error.is_finite()) {
-                    return Err(ImpactError::Step {
-                        time: format!("{t}"),
-                        reason: format!(
-                            "the disk's arc response is not finite at angle {angle} rad"
-                        ),
-                    });
-                }
                 row_total.push(total);
                 row_def.push(deformation);
                 row_err.push(error);
@@ -310,6 +297,49 @@ impl Inversion {
     /// The k-th frequency's s.
     fn s(&self, k: usize) -> Complex64 {
         Complex64::new(self.sigma, k as f64 * PI / self.period_half)
+    }
+
+    /// The deformation at time `t` over the receiver arc centred at `angle` and its error
+    /// bound, from the remainder's series `series` at t (without the factor
+    /// e^(sigma t)/T): over all frequencies, up to the four marks 1/2, 5/8, 3/4, 7/8 of
+    /// them, and over three quarters of the harmonics; `round` the series' rounding bound.
+    /// The periodised half-plane and the uniform mode are added here.
+    #[allow(clippy::too_many_arguments)]
+    fn deformation(
+        &self,
+        series: &[f64; 6],
+        round: f64,
+        t: f64,
+        theta0: f64,
+        angle: f64,
+        c1: f64,
+        hp: &HalfPlane<f64>,
+    ) -> Result<(f64, f64)> {
+        let scale = (self.sigma * t).exp() / self.period_half;
+        let all = series[0];
+        let remainder = scale * all;
+        // the truncation in frequency: twice the largest change over the last half of the
+        // frequencies (the series converges like K^-1.5 or faster, so this bounds the rest
+        // unless the partial sums happen to cross: four marks guard that)
+        let err_frequencies = 2.0
+            * scale
+            * series[1..5]
+                .iter()
+                .map(|p| (all - p).abs())
+                .fold(0.0, f64::max);
+        let err_harmonics = scale * (all - series[5]).abs();
+        let err_alias = (-2.0 * SIGMA_T).exp() * 10.0 * remainder.abs().max(theta0);
+        // the periodised half-plane, in its own units (c1 = 1: time c1s t)
+        let (images, err_images) = periodised_half_plane(hp, theta0, angle, c1 * t)?;
+        let value = images + remainder - theta0 / PI * t / c1;
+        let error = err_frequencies + err_harmonics + scale * round + err_alias + err_images;
+        if !(value.is_finite() && error.is_finite()) {
+            return Err(ImpactError::Step {
+                time: format!("{t}"),
+                reason: format!("the disk's response is not finite at angle {angle} rad"),
+            });
+        }
+        Ok((value, error))
     }
 }
 
@@ -511,22 +541,7 @@ impl Disk {
                 .collect();
             for (l, at) in columns.iter().enumerate().skip(1) {
                 let t = l as f64 * dt;
-                let scale = (inv.sigma * t).exp() / inv.period_half;
-                let all = at[0];
-                let remainder = scale * all;
-                let err_frequencies =
-                    2.0 * scale * at[1..5].iter().map(|p| (all - p).abs()).fold(0.0, f64::max);
-                let err_harmonics = scale * (all - at[5]).abs();
-                let err_alias = (-2.0 * SIGMA_T).exp() * 10.0 * remainder.abs().max(theta0);
-                let (images, err_images) = periodised_half_plane(&hp, theta0, angle, c1 * t)?;
-                let value = images + remainder - theta0 / PI * t / c1;
-                let e = err_frequencies + err_harmonics + scale * round + err_alias + err_images;
-                if !(value.is_finite() && e.is_finite()) {
-                    return Err(ImpactError::Step {
-                        time: format!("{t}"),
-                        reason: format!("the disk's lattice response is not finite at offset {j}"),
-                    });
-                }
+                let (value, e) = inv.deformation(at, round, t, theta0, angle, c1, &hp)?;
                 row.push(value);
                 err.push(e);
             }
