@@ -280,9 +280,10 @@ impl Inversion {
                 "arc over R",
                 arc,
                 format!(
-                    "a wider arc or an earlier last time than {t_max}: {work:.2e} harmonic \
-                     evaluations needed, above the limit {WORK_LIMIT:.0e} (the work grows like \
-                     t_max/arc^2)"
+                    "[{}, pi] with t_max/arc^2 small enough: {work:.2e} harmonic evaluations \
+                     needed to c2 t/R = {t_max}, above the limit {WORK_LIMIT:.0e} (a wider arc \
+                     or an earlier last time)",
+                    ARC_RANGE.0
                 ),
             ));
         }
