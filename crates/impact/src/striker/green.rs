@@ -192,9 +192,10 @@ impl Disk {
         let theta0 = 0.5 * arc;
         let t_max = times.iter().copied().fold(0.0, f64::max);
         let inv = Inversion::new(theta0, PERIOD_OVER_T * t_max, refine, arc, t_max)?;
+        // the half-plane first: it refuses a Poisson's ratio of 0 before the long part
+        let hp = HalfPlane::from_poisson(self.poisson())?;
         let samples = self.remainder_samples(theta0, angles, &inv)?;
         let (kmax, nmax) = (inv.kmax, inv.nmax);
-        let hp = HalfPlane::new(1.0 / c1)?;
         let mut out = ArcStepResponse {
             arc,
             angles: angles.to_vec(),
@@ -497,6 +498,7 @@ impl Disk {
         let m = (2.0 * PERIOD_OVER_T * steps as f64).ceil() as usize;
         let inv = Inversion::new(theta0, 0.5 * m as f64 * dt, 1.0, dx, t_max)?;
         let angles: Vec<f64> = (0..=offsets).map(|k| k as f64 * dx).collect();
+        let hp = HalfPlane::from_poisson(self.poisson())?;
         let samples = self.remainder_samples(theta0, &angles, &inv)?;
         let kmax = inv.kmax;
         let marks = [kmax / 2, 5 * kmax / 8, 3 * kmax / 4, 7 * kmax / 8];
@@ -506,7 +508,6 @@ impl Disk {
             .map(|(k, smp)| smp.rounding * if k == 0 { 0.5 } else { 1.0 } / inv.s(k).norm())
             .sum();
         let (_, inverse) = crate::history::Planner::new().plans(m);
-        let hp = HalfPlane::new(1.0 / c1)?;
         let zero = Complex64::new(0.0, 0.0);
         let mut out = LatticeStepResponse {
             dx,
