@@ -9,6 +9,11 @@
 //! beside the exponent N log N would have over the same cells). The cost against N_t and N_x
 //! separately: `cargo run --release -p impact --features examples --example cost_scaling`.
 //!
+//! The striker-green group: the free cylinder's own influence function
+//! (`Disk::arc_step_response`, `impact striker-green`) for the README's example (arc 0.02, four
+//! angles, c2s t/R = 0.1, 1, 8), for arc 0.05 to c2s t/R = 10 and for arc 0.02 to 50 (the
+//! cost grows like t_max/arc^2), all threads.
+//!
 //! Run: `cargo bench --bench impact`.
 
 use std::cell::RefCell;
@@ -139,10 +144,34 @@ fn scaling(c: &mut Criterion) {
     );
 }
 
+/// The cylinder's arc step response at three costs.
+fn striker_green(c: &mut Criterion) {
+    let mut g = c.benchmark_group("striker_green");
+    g.sample_size(10);
+    let disk = impact::striker::disk::Disk::new(0.25).unwrap();
+    let deg = |d: &[f64]| d.iter().map(|a: &f64| a.to_radians()).collect::<Vec<_>>();
+    for (name, arc, angles, times) in [
+        (
+            "arc=0.02, 4 angles, t=0.1,1,8",
+            0.02,
+            deg(&[0.0, 1.1459, 90.0, 180.0]),
+            vec![0.1, 1.0, 8.0],
+        ),
+        ("arc=0.05, t=10", 0.05, deg(&[0.0]), vec![10.0]),
+        ("arc=0.02, t=50", 0.02, deg(&[0.0]), vec![50.0]),
+    ] {
+        g.bench_function(name, |b| {
+            b.iter(|| black_box(disk.arc_step_response(arc, &angles, &times).unwrap()))
+        });
+    }
+    g.finish();
+}
+
 fn main() {
     // no plots: criterion's plotting backend needs a system font
     let mut c = Criterion::default().without_plots().configure_from_args();
     bench(&mut c);
     scaling(&mut c);
+    striker_green(&mut c);
     c.final_summary();
 }
