@@ -120,11 +120,18 @@ pub(crate) fn half_plane_transfer(c1: f64, n: f64, s: Complex64) -> Complex64 {
     let q = s * s;
     let n2 = n * n;
     let ic2 = 1.0 / (c1 * c1);
-    let alpha = (q * ic2 + n2).sqrt();
-    let beta = (q + n2).sqrt();
+    let alpha = principal_sqrt(q * ic2 + n2);
+    let beta = principal_sqrt(q + n2);
     let p = ((q + 8.0 * n2) * q + n2 * n2 * (24.0 - 16.0 * ic2)) * q
         + 16.0 * n2 * n2 * n2 * (1.0 - ic2);
     alpha * ((q + 2.0 * n2) * (q + 2.0 * n2) + alpha * beta * (4.0 * n2)) / p
+}
+
+/// The principal square root in algebraic form ([`complexfn::Cx::sqrt`]: one real square
+/// root of the modulus' half-sum, no trigonometric functions).
+fn principal_sqrt(z: Complex64) -> Complex64 {
+    let r = complexfn::Cx::new(z.re, z.im).sqrt();
+    Complex64::new(r.re, r.im)
 }
 
 fn sinc(x: f64) -> f64 {
@@ -400,7 +407,7 @@ impl Disk {
                     1 => w - half_plane_transfer(c1, nf, s) - pole,
                     _ => w - half_plane_transfer(c1, nf, s),
                 };
-                rounding += base[n].abs() * (w.norm() + e.norm());
+                rounding += base[n].abs() * (w.l1_norm() + e.l1_norm()); // bounds the moduli
                 for (acc, wt) in full.iter_mut().zip(&weights) {
                     *acc += e * wt[n];
                 }
