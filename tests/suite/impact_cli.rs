@@ -1045,18 +1045,31 @@ fn striker_green_prints_the_cylinder_response_with_its_keys() {
     }
     // nothing has reached the far side at c2 t/R = 1 (the P wave needs 2 sin(...)/c1s)
     assert!(w[3][1].abs() <= e[3][1]);
-    // CSV: a header and one row per angle and time
-    let (code, out, _) = impact(&[
+    // the flags of a small case, each pair replaceable
+    let base = [
         "striker-green",
         "--poisson",
         "0.25",
         "--arc-over-R",
         "0.05",
         "--at-deg",
-        "0,10",
+        "0",
         "--times",
-        "c2t/R=0.5",
-    ]);
+        "c2t/R=1",
+    ];
+    let with = |args: &[&'static str]| -> Vec<&'static str> {
+        let mut argv = base.to_vec();
+        for pair in args.chunks(2) {
+            // the later flag replaces the earlier: drop the default pair first
+            if let Some(p) = argv.iter().position(|a| *a == pair[0]) {
+                argv.drain(p..p + 2);
+            }
+            argv.extend(pair.iter());
+        }
+        argv
+    };
+    // CSV: a header and one row per angle and time
+    let (code, out, _) = impact(&with(&["--at-deg", "0,10", "--times", "c2t/R=0.5"]));
     assert_eq!(code, 0);
     let rows: Vec<&str> = out.lines().filter(|l| !l.starts_with('#')).collect();
     assert_eq!(
@@ -1074,22 +1087,7 @@ fn striker_green_prints_the_cylinder_response_with_its_keys() {
         (vec!["--striker", "shell"], "--striker"),
         (vec!["--poisson", "0.6"], "poisson"),
     ] {
-        let mut argv = vec![
-            "striker-green",
-            "--poisson",
-            "0.25",
-            "--arc-over-R",
-            "0.05",
-            "--at-deg",
-            "0",
-            "--times",
-            "c2t/R=1",
-        ];
-        // the later flag replaces the earlier: drop the default pair first
-        if let Some(p) = argv.iter().position(|a| *a == args[0]) {
-            argv.drain(p..p + 2);
-        }
-        argv.extend(args.iter());
+        let argv = with(&args);
         let (code, _, err) = impact(&argv);
         assert_eq!(code, 2, "{argv:?}: {err}");
         assert_eq!(err.trim().lines().count(), 1, "{argv:?}: {err}");

@@ -31,6 +31,7 @@ use rayon::prelude::*;
 use rustfft::num_complex::Complex64;
 
 use super::disk::{ratio_terms, transfer, Disk};
+use super::sinc;
 use crate::error::{invalid, ImpactError, Result};
 
 /// The admissible arc widths 2 theta0 R (units R).
@@ -134,14 +135,6 @@ fn principal_sqrt(z: Complex64) -> Complex64 {
     Complex64::new(r.re, r.im)
 }
 
-fn sinc(x: f64) -> f64 {
-    if x.abs() < 1e-4 {
-        1.0 - x * x / 6.0
-    } else {
-        x.sin() / x
-    }
-}
-
 /// The remainder's transform at one s for every receiver: sum_n w_n E_n(s) over all the
 /// harmonics and over the first three quarters of them, and a bound of its rounding.
 struct Sample {
@@ -214,6 +207,7 @@ impl Disk {
             frequencies: kmax + 1,
         };
         let translation_weight = 2.0 * theta0.sin() / PI * sinc(theta0);
+        let round = inv.rounding(&samples);
         for (j, &angle) in angles.iter().enumerate() {
             let mut row_total = Vec::with_capacity(times.len());
             let mut row_def = Vec::with_capacity(times.len());
@@ -221,7 +215,7 @@ impl Disk {
             for &t in times {
                 // the remainder by Durbin's series, over all frequencies, up to each mark,
                 // and over three quarters of the harmonics
-                let (mut all, mut few_harmonics, mut round) = (0.0, 0.0, 0.0);
+                let (mut all, mut few_harmonics) = (0.0, 0.0);
                 // partial sums over the first 1/2, 5/8, 3/4 and 7/8 of the frequencies
                 let marks = [kmax / 2, 5 * kmax / 8, 3 * kmax / 4, 7 * kmax / 8];
                 let mut partial = [0.0; 4];
@@ -237,7 +231,6 @@ impl Disk {
                         }
                     }
                     few_harmonics += (smp.half[j] * phase).re * factor;
-                    round += smp.rounding * factor / s.norm();
                 }
                 let series = [
                     all,
@@ -306,6 +299,15 @@ impl Inversion {
     /// The k-th frequency's s.
     fn s(&self, k: usize) -> Complex64 {
         Complex64::new(self.sigma, k as f64 * PI / self.period_half)
+    }
+
+    /// The series' rounding bound (without the factor e^(sigma t)/T), the same at every time.
+    fn rounding(&self, samples: &[Sample]) -> f64 {
+        samples
+            .iter()
+            .enumerate()
+            .map(|(k, smp)| smp.rounding * if k == 0 { 0.5 } else { 1.0 } / self.s(k).norm())
+            .sum()
     }
 
     /// The deformation at time `t` over the receiver arc centred at `angle` and its error
@@ -509,11 +511,7 @@ impl Disk {
         let samples = self.remainder_samples(theta0, &angles, &inv)?;
         let kmax = inv.kmax;
         let marks = [kmax / 2, 5 * kmax / 8, 3 * kmax / 4, 7 * kmax / 8];
-        let round: f64 = samples
-            .iter()
-            .enumerate()
-            .map(|(k, smp)| smp.rounding * if k == 0 { 0.5 } else { 1.0 } / inv.s(k).norm())
-            .sum();
+        let round = inv.rounding(&samples);
         let (_, inverse) = crate::history::Planner::new().plans(m);
         let zero = Complex64::new(0.0, 0.0);
         let mut out = LatticeStepResponse {
