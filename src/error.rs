@@ -55,7 +55,8 @@ pub fn flag_of(name: &'static str) -> &'static str {
         "cell width dx/R" => "dx",
         "V0/c1" => "v0_over_c1",
         "mass ratio m0/(rho R^2)" => "mass_ratio",
-        "mass ratio m0/(rho R^2) of a shell striker" => "mass_ratio",
+        "mass ratio m0/(rho R^2) of a shell striker"
+        | "mass ratio m0/(rho R^2) of a cylinder striker" => "mass_ratio",
         "end time c1 t/R" => "end",
         "driven table" | "driven speed V/c1" => "driven",
         "Poisson's ratio" => "poisson",
@@ -68,6 +69,7 @@ pub fn flag_of(name: &'static str) -> &'static str {
         "c2 t/R" => "times",
         "profile"
         | "profile of a shell striker"
+        | "profile of a cylinder striker"
         | "profile exponent k"
         | "wedge half-angle theta_deg" => "profile",
         "striker"

@@ -165,7 +165,8 @@ impl RunInput {
         if self.profile.is_empty() {
             missing.push(("profile", "--profile"));
         }
-        let shell = self.striker.starts_with("shell:");
+        // the shell's and the cylinder's masses follow from their geometry
+        let shell = self.striker.starts_with("shell:") || self.striker.starts_with("cylinder:");
         if self.driven.is_none() && self.v0_over_c1.is_none() {
             if self.mass_ratio.is_none() && !shell {
                 missing.push(("mass_ratio", "--mass-ratio and --v0-over-c1 (or --driven)"));

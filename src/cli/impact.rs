@@ -9,7 +9,8 @@ use crate::error::InputError;
 use crate::impact_api::{EdgeInput, GreenInput, RunInput, StrikerGreenInput};
 
 /// The transient impact of strikers on an elastic half-plane (plane strain, the impact
-/// paper): rigid, elastic and thin-shell strikers over a whole impact to their rebound,
+/// paper): rigid, elastic, full elastic cylinder and thin-shell strikers over a whole impact
+/// to their rebound,
 /// Lamb's surface influence functions, and the pressure at a moving contact edge.
 #[derive(Parser, Debug)]
 #[command(name = "impact", version, arg_required_else_help = true)]
@@ -26,7 +27,8 @@ pub enum Command {
     /// Rayleigh constants of the half-plane.
     Green(GreenArgs),
     /// The transient impact of a striker on the half-plane, rigid, elastic (the local
-    /// half-plane model) or a thin cylindrical shell, free or driven: histories of the
+    /// half-plane model), a full elastic cylinder or a thin cylindrical shell, free or
+    /// driven: histories of the
     /// penetration, the contact half-width, the force, energies and pressure profiles, the
     /// rebound, each with an error estimate from grid refinement.
     Run(RunArgs),
@@ -114,7 +116,9 @@ pub struct RunArgs {
     material: MaterialArgs,
     /// The striker: `rigid`; `elastic:c1=..,c2=..,density_ratio=..` (its wave speeds in m/s,
     /// its density over the half-plane's; local half-plane model, valid until c1 t/R =
-    /// 2 c1/c1s); `shell:thickness_over_R=..,c1=..,c2=..,density_ratio=..` (a thin
+    /// 2 c1/c1s); `cylinder:c1=..,c2=..,density_ratio=..` (the full elastic cylinder of
+    /// radius R, valid for all times, its mass pi rho_s R^2; profile circle:R=1 or
+    /// parabola:R=1); `shell:thickness_over_R=..,c1=..,c2=..,density_ratio=..` (a thin
     /// cylindrical shell of radius R, its mass from its geometry). Deformable strikers need
     /// the half-plane's --c1 and --c2.
     #[arg(long, default_value = "rigid")]
@@ -123,8 +127,8 @@ pub struct RunArgs {
     /// flat:a=.., table:FILE (two columns x f in metres, from x = 0).
     #[arg(long)]
     profile: Option<String>,
-    /// m0/(rho R^2), the striker's mass per unit length (free striker; a shell's follows
-    /// from its geometry).
+    /// m0/(rho R^2), the striker's mass per unit length (free striker; a shell's and a
+    /// cylinder's follow from their geometry).
     #[arg(long, allow_hyphen_values = true)]
     mass_ratio: Option<f64>,
     /// V0/c1, the initial speed (free striker).

@@ -280,7 +280,8 @@ pub fn end(spec: &str) -> R<(f64, Stop)> {
     Ok((end[0], Stop::AtEnd))
 }
 
-/// The striker of `--striker`: `rigid`, `elastic:c1=..,c2=..,density_ratio=..` or
+/// The striker of `--striker`: `rigid`, `elastic:c1=..,c2=..,density_ratio=..`,
+/// `cylinder:c1=..,c2=..,density_ratio=..` or
 /// `shell:thickness_over_R=..,c1=..,c2=..,density_ratio=..`, its wave speeds in m/s over the
 /// half-plane's `c1` (m/s; a deformable striker needs it).
 pub fn striker(spec: &str, c1: Option<f64>) -> R<Striker> {
@@ -292,18 +293,19 @@ pub fn striker(spec: &str, c1: Option<f64>) -> R<Striker> {
         InputError::new(
             p,
             format!(
-                "invalid --striker {spec:?}: rigid, elastic:c1=..,c2=..,density_ratio=.. or \
+                "invalid --striker {spec:?}: rigid, elastic:c1=..,c2=..,density_ratio=.., \
+                 cylinder:c1=..,c2=..,density_ratio=.. or \
                  shell:thickness_over_R=..,c1=..,c2=..,density_ratio=.."
             ),
         )
     })?;
     let keys: &[&str] = match kind {
-        "elastic" => &["c1", "c2", "density_ratio"],
+        "elastic" | "cylinder" => &["c1", "c2", "density_ratio"],
         "shell" => &["thickness_over_R", "c1", "c2", "density_ratio"],
         other => {
             return Err(InputError::new(
                 p,
-                format!("invalid --striker kind {other:?}: one of rigid, elastic, shell"),
+                format!("invalid --striker kind {other:?}: one of rigid, elastic, cylinder, shell"),
             ))
         }
     };
@@ -348,6 +350,7 @@ pub fn striker(spec: &str, c1: Option<f64>) -> R<Striker> {
     };
     Ok(match kind {
         "elastic" => Striker::Elastic(material),
+        "cylinder" => Striker::Cylinder(material),
         _ => Striker::Shell(ShellStriker {
             thickness: get("thickness_over_R")?,
             material,
@@ -388,18 +391,21 @@ pub fn drive(
                 ));
             }
         }
-        (None, Some(_), _) if matches!(striker, Striker::Shell(_)) => {
+        (None, Some(_), _) if striker.own_mass_ratio().is_some() => {
             return Err(InputError::new(
                 "mass_ratio",
-                "contradictory flags: --mass-ratio with --striker shell (the shell's mass follows from its thickness and density)",
+                format!(
+                    "contradictory flags: --mass-ratio with --striker {} (its mass follows from its geometry and density)",
+                    striker.name()
+                ),
             ))
         }
-        (None, None, Some(v)) => match striker {
-            Striker::Shell(s) => Drive::Free {
-                mass_ratio: s.mass_ratio(),
+        (None, None, Some(v)) => match striker.own_mass_ratio() {
+            Some(mass_ratio) => Drive::Free {
+                mass_ratio,
                 v0_over_c1: v,
             },
-            _ => {
+            None => {
                 return Err(InputError::new(
                     "mass_ratio",
                     "missing --mass-ratio (or --driven)",

@@ -843,6 +843,11 @@ impl RunReport {
                        "density_ratio": s.material.density_ratio, "mass_ratio": s.mass_ratio(),
                        "model": "Timoshenko ring (membrane, bending, transverse shear, rotary inertia)"}),
             ),
+            Striker::Cylinder(mat) => Some(
+                json!({"c1_over_c1": mat.c1_ratio, "c2_over_c1": mat.c2_ratio, "density_ratio": mat.density_ratio,
+                       "mass_ratio": c.striker.own_mass_ratio(),
+                       "model": "free elastic disk (plane strain), its deformation by harmonics in the polar angle"}),
+            ),
         }
     }
 

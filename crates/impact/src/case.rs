@@ -178,24 +178,39 @@ impl ImpactCase {
     pub fn validate(&self) -> Result<()> {
         self.profile.validate()?;
         self.striker.validate()?;
-        if let Striker::Shell(shell) = &self.striker {
+        if let Some(own) = self.striker.own_mass_ratio() {
+            // the shell and the cylinder: their radius is the profile's, their mass their own
+            let (profile_name, mass_name, mass_of) = match self.striker {
+                Striker::Shell(_) => (
+                    "profile of a shell striker",
+                    "mass ratio m0/(rho R^2) of a shell striker",
+                    "2 pi (h_s/R) rho_s/rho",
+                ),
+                _ => (
+                    "profile of a cylinder striker",
+                    "mass ratio m0/(rho R^2) of a cylinder striker",
+                    "pi rho_s/rho",
+                ),
+            };
             match self.profile {
                 Profile::Circle { radius } | Profile::Parabola { radius } if radius == 1.0 => {}
                 _ => {
                     return Err(invalid(
-                        "profile of a shell striker",
+                        profile_name,
                         self.profile.label(),
-                        "circle:R=1 or parabola:R=1 (the shell's radius is the unit R)",
+                        format!(
+                            "circle:R=1 or parabola:R=1 (the {}'s radius is the unit R)",
+                            self.striker.name()
+                        ),
                     ))
                 }
             }
             if let Drive::Free { mass_ratio, .. } = self.drive {
-                let own = shell.mass_ratio();
                 if (mass_ratio - own).abs() > 1e-12 * own {
                     return Err(invalid(
-                        "mass ratio m0/(rho R^2) of a shell striker",
+                        mass_name,
                         mass_ratio,
-                        format!("its own 2 pi (h_s/R) rho_s/rho = {own:.6}"),
+                        format!("its own {mass_of} = {own:.6}"),
                     ));
                 }
             }
@@ -302,15 +317,19 @@ impl ImpactCase {
 
     /// The factor of the edge model's gap coefficient for the pair of bodies
     /// (`docs/impact.md`, section 4): 1 for a rigid striker; 1 + mu/mu_s for an elastic
-    /// striker of the half-plane's wave speeds (both local solutions then share the
-    /// exponents, and the gaps add); `None` otherwise (the edge is captured cell by cell).
+    /// striker of the half-plane's wave speeds, local model or full cylinder (both local
+    /// solutions then share the exponents, and the gaps add: near the edge the cylinder is
+    /// its own half-plane, `docs/strikers.md` section 8); `None` otherwise (the edge is
+    /// captured cell by cell).
     pub(crate) fn edge_gap_scale(&self, m: f64) -> Option<f64> {
         if !self.edge_model {
             return None;
         }
         match &self.striker {
             Striker::Rigid => Some(1.0),
-            Striker::Elastic(s) if s.c1_ratio == 1.0 && (s.c2_ratio - m).abs() <= 1e-12 * m => {
+            Striker::Elastic(s) | Striker::Cylinder(s)
+                if s.c1_ratio == 1.0 && (s.c2_ratio - m).abs() <= 1e-12 * m =>
+            {
                 Some(1.0 + m * m / (s.density_ratio * s.c2_ratio * s.c2_ratio))
             }
             _ => None,

@@ -182,7 +182,7 @@ impl ImpactCase {
         let mut shared = match (&self.striker, shared_kappa) {
             (Striker::Elastic(_), true) => {
                 self.striker
-                    .compliance(m64, self.dx, (level_dt(0) / level_dx(0)).to_f64())?
+                    .compliance(m64, self.dx, (level_dt(0) / level_dx(0)).to_f64(), 0)?
             }
             _ => None,
         };
@@ -210,12 +210,6 @@ impl ImpactCase {
                 (Some(t), _) | (None, Some(t)) => t,
                 (None, None) => unreachable!("one set of tables exists"),
             };
-            let mut own = match (&self.striker, shared_kappa) {
-                (Striker::Shell(_), _) | (Striker::Elastic(_), false) => {
-                    self.striker.compliance(m64, dx, kappa.to_f64())?
-                }
-                _ => None,
-            };
             let scale = 1u64 << (top - level);
             // the steps of this level to the common end, if known, and the cap
             let cap_steps = ((self.end.min(valid_end) / dt.to_f64()) + 1e-9).floor() as usize;
@@ -223,6 +217,13 @@ impl ImpactCase {
             let horizon = match self.stop {
                 Stop::AtEnd => target.map_or(cap_steps, |(n, _)| n),
                 Stop::AtSeparation => cap_steps,
+            };
+            let mut own = match (&self.striker, shared_kappa) {
+                (Striker::Shell(_) | Striker::Cylinder(_), _) | (Striker::Elastic(_), false) => {
+                    self.striker
+                        .compliance(m64, dx, kappa.to_f64(), horizon + 1)?
+                }
+                _ => None,
             };
             let mut march = March::new(
                 &mut *tables,

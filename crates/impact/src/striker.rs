@@ -1,6 +1,6 @@
 //! The striker's own surface influence function G0 of the contact equation (7)
-//! (`docs/strikers.md`): rigid (G0 = 0), elastic in the local half-plane model, or a thin
-//! cylindrical shell (Timoshenko ring).
+//! (`docs/strikers.md`): rigid (G0 = 0), elastic in the local half-plane model, the full
+//! elastic cylinder (the free disk's response), or a thin cylindrical shell (Timoshenko ring).
 //!
 //! The contact condition with a deformable striker reads w(x, t) + w_s(x, t) = h(t) - f(x) on
 //! the contact, w the half-plane's normal displacement (into the half-plane) and w_s the
@@ -11,8 +11,11 @@
 //!
 //! Units as in the march: c1 = 1 and mu = 1 of the half-plane, lengths in R.
 
+mod cylinder;
 pub mod disk;
 pub mod green;
+
+use cylinder::CylinderTable;
 
 use std::f64::consts::PI;
 
@@ -103,6 +106,9 @@ pub enum Striker {
     /// A thin cylindrical shell (Timoshenko ring: membrane, bending, transverse shear, rotary
     /// inertia), empty, valid for all times.
     Shell(ShellStriker),
+    /// The full elastic cylinder of radius R (the unit of length) in plane strain: the free
+    /// disk's own response ([`green`]), valid for all times; its mass pi R^2 rho_s.
+    Cylinder(StrikerMaterial),
 }
 
 /// Transverse-shear coefficient of the shell's wall.
@@ -115,6 +121,18 @@ impl Striker {
             Striker::Rigid => "rigid",
             Striker::Elastic(_) => "elastic",
             Striker::Shell(_) => "shell",
+            Striker::Cylinder(_) => "cylinder",
+        }
+    }
+
+    /// The mass per unit length over rho R^2 that the striker's geometry fixes: 2 pi (h_s/R)
+    /// (rho_s/rho) for the shell, pi rho_s/rho for the cylinder; `None` for the strikers whose
+    /// mass is an input (rigid, local elastic model).
+    pub fn own_mass_ratio(&self) -> Option<f64> {
+        match self {
+            Striker::Shell(s) => Some(s.mass_ratio()),
+            Striker::Cylinder(mat) => Some(PI * mat.density_ratio),
+            Striker::Rigid | Striker::Elastic(_) => None,
         }
     }
 
@@ -122,7 +140,7 @@ impl Striker {
     pub fn validate(&self) -> Result<()> {
         match self {
             Striker::Rigid => Ok(()),
-            Striker::Elastic(mat) => mat.validate(),
+            Striker::Elastic(mat) | Striker::Cylinder(mat) => mat.validate(),
             Striker::Shell(s) => {
                 s.material.validate()?;
                 if !(s.thickness.is_finite() && s.thickness > 0.0 && s.thickness <= 0.3) {
@@ -148,8 +166,15 @@ impl Striker {
     }
 
     /// Builds the striker's compliance for a grid of cell width `dx` and step `kappa dx`, on
-    /// the half-plane of speed ratio `m` (its mu = 1). `None` for the rigid striker.
-    pub(crate) fn compliance(&self, m: f64, dx: f64, kappa: f64) -> Result<Option<Compliance>> {
+    /// the half-plane of speed ratio `m` (its mu = 1), for the steps 0 .. `horizon` (the
+    /// cylinder computes them at once). `None` for the rigid striker.
+    pub(crate) fn compliance(
+        &self,
+        m: f64,
+        dx: f64,
+        kappa: f64,
+        horizon: usize,
+    ) -> Result<Option<Compliance>> {
         Ok(match self {
             Striker::Rigid => None,
             Striker::Elastic(mat) => {
@@ -164,6 +189,10 @@ impl Striker {
                 dx,
                 kappa * dx,
             )?)),
+            Striker::Cylinder(mat) => Some(Compliance::Cylinder {
+                table: CylinderTable::new(mat, dx, kappa * dx, horizon)?,
+                scale: 1.0 / mat.shear_modulus_ratio(m),
+            }),
         })
     }
 }
@@ -182,6 +211,13 @@ pub(crate) enum Compliance {
     },
     /// The shell's modal sums.
     Shell(ShellTable),
+    /// The free disk's lattice response, times `scale` = mu/mu_s.
+    Cylinder {
+        /// The coefficients in the disk's units (mu_s = 1).
+        table: CylinderTable,
+        /// mu/mu_s.
+        scale: f64,
+    },
 }
 
 impl Compliance {
@@ -190,6 +226,7 @@ impl Compliance {
         match self {
             Compliance::Elastic { tables, .. } => tables.ensure(kmax, lmax),
             Compliance::Shell(t) => t.ensure(kmax, lmax),
+            Compliance::Cylinder { table, .. } => table.ensure(kmax, lmax),
         }
     }
 
@@ -199,15 +236,16 @@ impl Compliance {
         match self {
             Compliance::Elastic { tables, scale } => tables.error() * scale,
             Compliance::Shell(t) => t.error(),
+            Compliance::Cylinder { table, scale } => table.error() * scale,
         }
     }
 
     /// The reach of the coefficients c(., l) (`Tables::reach_at`, the striker's own); `None`
-    /// for the shell, whose modes respond everywhere at once.
+    /// for the shell and the cylinder, whose modes respond everywhere at once.
     pub(crate) fn reach_at(&self, l: usize) -> Option<usize> {
         match self {
             Compliance::Elastic { tables, .. } => Some(tables.reach_at(l)),
-            Compliance::Shell(_) => None,
+            Compliance::Shell(_) | Compliance::Cylinder { .. } => None,
         }
     }
 
@@ -216,6 +254,7 @@ impl Compliance {
         match self {
             Compliance::Elastic { tables, scale } => (tables.row(l), *scale),
             Compliance::Shell(t) => (t.row(l), 1.0),
+            Compliance::Cylinder { table, scale } => (table.row(l), *scale),
         }
     }
 }

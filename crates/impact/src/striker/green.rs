@@ -488,6 +488,18 @@ impl Disk {
         offsets: usize,
         steps: usize,
     ) -> Result<LatticeStepResponse> {
+        self.lattice_rows(dx, dt, 0..offsets + 1, steps)
+    }
+
+    /// [`Disk::lattice_step_response`] for the receiver offsets `offsets` alone (rows
+    /// `[k - offsets.start]`): a table grown by columns computes only the new ones.
+    pub(crate) fn lattice_rows(
+        &self,
+        dx: f64,
+        dt: f64,
+        offsets: std::ops::Range<usize>,
+        steps: usize,
+    ) -> Result<LatticeStepResponse> {
         if !(dx >= ARC_RANGE.0 && dx <= ARC_RANGE.1) {
             return Err(invalid("arc over R", dx, format!("[{}, pi]", ARC_RANGE.0)));
         }
@@ -498,15 +510,19 @@ impl Disk {
                 format!("(0, {LATEST_TIME}] (steps times dt)"),
             ));
         }
-        if offsets > 100_000 {
-            return Err(invalid("angle", offsets, "offsets 0..=100000"));
+        if offsets.end > 100_001 || offsets.is_empty() {
+            return Err(invalid(
+                "angle",
+                format!("offsets {offsets:?}"),
+                "a non-empty range within 0..=100000",
+            ));
         }
         let c1 = self.c1();
         let theta0 = 0.5 * dx;
         let t_max = steps as f64 * dt;
         let m = (2.0 * PERIOD_OVER_T * steps as f64).ceil() as usize;
         let inv = Inversion::new(theta0, 0.5 * m as f64 * dt, 1.0, dx, t_max)?;
-        let angles: Vec<f64> = (0..=offsets).map(|k| k as f64 * dx).collect();
+        let angles: Vec<f64> = offsets.clone().map(|k| k as f64 * dx).collect();
         let hp = HalfPlane::from_poisson(self.poisson())?;
         let samples = self.remainder_samples(theta0, &angles, &inv)?;
         let kmax = inv.kmax;
@@ -517,8 +533,8 @@ impl Disk {
         let mut out = LatticeStepResponse {
             dx,
             dt,
-            deformation: Vec::with_capacity(offsets + 1),
-            error: Vec::with_capacity(offsets + 1),
+            deformation: Vec::with_capacity(angles.len()),
+            error: Vec::with_capacity(angles.len()),
         };
         for (j, &angle) in angles.iter().enumerate() {
             // folded series: all frequencies, the four partial sums, three quarters of the
