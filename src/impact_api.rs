@@ -273,7 +273,7 @@ pub fn run(
         None => {
             let sol = c.solve_reporting::<f64>(progress)?;
             let (mut r, rows) = RunReport::of(&sol, version, None, &times).map_err(to_error)?;
-            r.add_shell_energy(&sol, &rows)?;
+            r.add_striker_energy(&sol, &rows)?;
             r
         }
         Some(d) => {

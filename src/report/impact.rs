@@ -314,8 +314,8 @@ pub struct RunReport {
     pub edge_without_solution: Vec<EdgeWithoutSolution>,
     /// The pressure profiles asked for.
     pub pressure: Option<Vec<PressureReport>>,
-    /// The shell striker's strain and vibration energies (f64 runs of a shell).
-    pub shell_energy: Vec<Column>,
+    /// A shell's or a cylinder's strain and vibration energies (f64 runs).
+    pub striker_energy_parts: Vec<Column>,
     /// The quantities without a value or an estimate, with the reasons (key, reason).
     pub unavailable: Vec<(String, String)>,
 }
@@ -618,7 +618,7 @@ impl RunReport {
                 })
                 .collect(),
             pressure,
-            shell_energy: Vec::new(),
+            striker_energy_parts: Vec::new(),
             unavailable: why,
         };
         report.check_finite()?;
@@ -629,7 +629,7 @@ impl RunReport {
     fn check_finite(&self) -> Result<(), ReportError> {
         let bad = |key: &str| Err(ReportError::NotFinite(key.to_string()));
         let all = |xs: &[Number]| xs.iter().all(|x| x.value.is_finite());
-        for col in self.columns.iter().chain(&self.shell_energy) {
+        for col in self.columns.iter().chain(&self.striker_energy_parts) {
             if !all(&col.values) {
                 return bad(col.key);
             }
@@ -675,14 +675,14 @@ impl RunReport {
         Ok(())
     }
 
-    /// Adds the shell striker's strain and vibration energies with their estimates (f64: the
-    /// shell runs in f64 only).
-    pub fn add_shell_energy(
+    /// Adds a shell's or a cylinder's strain and vibration energies with their estimates
+    /// (f64: those strikers run in f64 only).
+    pub fn add_striker_energy(
         &mut self,
         sol: &SolvedImpact,
         rows: &[impact::HistoryRow],
     ) -> Result<(), impact::ImpactError> {
-        let Some(parts) = sol.shell_energy_history(rows) else {
+        let Some(parts) = sol.striker_energy_history(rows) else {
             return Ok(());
         };
         let parts = parts?;
@@ -703,7 +703,7 @@ impl RunReport {
                     reason: format!("{key} is not finite"),
                 });
             }
-            self.shell_energy.push(Column {
+            self.striker_energy_parts.push(Column {
                 key,
                 values: vals.iter().map(|v| number(v.value, None)).collect(),
                 // every value's estimate, or none (one grid level)
@@ -717,7 +717,7 @@ impl RunReport {
     pub fn column(&self, key: &str) -> Option<&Column> {
         self.columns
             .iter()
-            .chain(&self.shell_energy)
+            .chain(&self.striker_energy_parts)
             .find(|c| c.key == key)
     }
 
@@ -823,7 +823,7 @@ impl RunReport {
                 .collect();
             out.push(("unavailable", Value::Object(why)));
         }
-        for col in &self.shell_energy {
+        for col in &self.striker_energy_parts {
             out.push((col.key, numbers(&col.values)));
         }
         out
@@ -963,7 +963,7 @@ impl RunReport {
                 errs.insert(key.to_string(), json!(e));
             }
         }
-        for col in &self.shell_energy {
+        for col in &self.striker_energy_parts {
             if let Some(e) = &col.errors {
                 errs.insert(col.key.into(), json!(e));
             }

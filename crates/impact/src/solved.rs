@@ -9,6 +9,7 @@ use crate::error::{ImpactError, Result};
 use crate::march::EdgeLaw;
 use crate::run::Run;
 use crate::scalar::Scalar;
+use crate::striker::disk::Disk;
 use crate::striker::{shell_energies, Ring, Striker};
 
 /// The safety factor on the grids' differences in every error estimate of a history and a
@@ -536,55 +537,118 @@ impl<T: Scalar> SolvedImpact<T> {
     }
 }
 
+/// A deformable striker's energies after one step ([`SolvedImpact::striker_energies`]), over
+/// rho c1^2 R^2.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StrikerEnergyStep {
+    /// c1 t/R.
+    pub t: f64,
+    /// The strain energy.
+    pub strain: f64,
+    /// The vibration kinetic energy (in the frame of the mass centre).
+    pub kinetic: f64,
+    /// The estimate of the modal truncation's error (both energies).
+    pub truncation: f64,
+}
+
+/// The highest frequency (units c2s/R) of the free disk's modes that carry a cylinder
+/// striker's vibration energy: the kinetic energy converges like about 1/omega_max (its
+/// change per doubling falls by 2.3 to 2.8 on the reference case, about 1e-3 of it at 64).
+pub const CYLINDER_MODES_BELOW: f64 = 64.0;
+
 impl SolvedImpact<f64> {
-    /// The shell striker's strain and vibration kinetic energy over rho c1^2 R^2 after each
-    /// step of the finest grid, (c1 t/R, strain, kinetic), by the modal recursion of
-    /// [`shell_energies`] (independent of the coefficient tables); `None` for other strikers.
-    pub fn shell_energies(&self) -> Option<Result<Vec<(f64, f64, f64)>>> {
-        self.run_shell_energies(&self.runs[0])
+    /// A deformable striker's strain and vibration kinetic energy over rho c1^2 R^2 after
+    /// each step of the finest grid: the shell's by the
+    /// modal recursion of [`shell_energies`] (independent of the coefficient tables; its
+    /// truncation is in the coefficients' bound, so 0 here); the cylinder's vibration by the
+    /// free disk's modes below [`CYLINDER_MODES_BELOW`] ([`crate::striker::cylinder::DiskModes::energies`]), its strain
+    /// the work done on its deformation less the vibration, and the truncation's estimate
+    /// twice the change from the modes below half that frequency (`docs/strikers.md`, section
+    /// 8). `None` for the other strikers.
+    pub fn striker_energies(&self) -> Option<Result<Vec<StrikerEnergyStep>>> {
+        self.run_striker_energies(&self.runs[0])
     }
 
-    fn run_shell_energies(&self, run: &Run) -> Option<Result<Vec<(f64, f64, f64)>>> {
-        let Striker::Shell(shell) = &self.case.striker else {
-            return None;
-        };
+    fn run_striker_energies(&self, run: &Run) -> Option<Result<Vec<StrikerEnergyStep>>> {
         let m2 = self.m * self.m;
-        Some((|| {
-            let ring = Ring::new(shell, self.m)?;
-            let pressures: Vec<Vec<f64>> = run.steps.iter().map(|s| s.pressure.clone()).collect();
-            let e = shell_energies(&ring, run.dx, run.dt, &pressures)?;
-            Ok(run
-                .steps
-                .iter()
-                .zip(e)
-                .map(|(s, (u, k))| (s.t, u * m2, k * m2))
-                .collect())
-        })())
+        let pressures =
+            || -> Vec<Vec<f64>> { run.steps.iter().map(|s| s.pressure.clone()).collect() };
+        match &self.case.striker {
+            Striker::Shell(shell) => Some((|| {
+                let ring = Ring::new(shell, self.m)?;
+                let e = shell_energies(&ring, run.dx, run.dt, &pressures())?;
+                Ok(run
+                    .steps
+                    .iter()
+                    .zip(e)
+                    .map(|(s, (u, k))| StrikerEnergyStep {
+                        t: s.t,
+                        strain: u * m2,
+                        kinetic: k * m2,
+                        truncation: 0.0,
+                    })
+                    .collect())
+            })()),
+            Striker::Cylinder(mat) => Some((|| {
+                // the disk's units: pressures over mu_s, time c2s t/R, energies mu_s R^2
+                let g = mat.shear_modulus_ratio(self.m);
+                let scaled: Vec<Vec<f64>> = pressures()
+                    .into_iter()
+                    .map(|p| p.into_iter().map(|v| v / g).collect())
+                    .collect();
+                let modes = Disk::new(mat.poisson())?.modes(CYLINDER_MODES_BELOW)?;
+                let dtau = run.dt * mat.c2_ratio;
+                let all = modes.energies(run.dx, dtau, &scaled);
+                let half = modes
+                    .below(0.5 * CYLINDER_MODES_BELOW)
+                    .energies(run.dx, dtau, &scaled);
+                Ok(run
+                    .steps
+                    .iter()
+                    .zip(all.iter().zip(&half))
+                    .map(|(s, (e, h))| {
+                        let kinetic = e.0 * g * m2;
+                        let trunc = 2.0 * (e.0 - h.0).abs() * g * m2;
+                        StrikerEnergyStep {
+                            t: s.t,
+                            strain: s.striker_work * m2 - kinetic,
+                            kinetic,
+                            truncation: trunc,
+                        }
+                    })
+                    .collect())
+            })()),
+            _ => None,
+        }
     }
 
-    /// The shell striker's (strain, vibration kinetic) energy over rho c1^2 R^2 at the times
-    /// of `rows` (from [`SolvedImpact::history`]), each with an error estimate: four times the
-    /// difference between the two finest levels (the factor of the history's estimates),
-    /// plus the modal truncation bound. `None` for other strikers.
-    pub fn shell_energy_history(&self, rows: &[HistoryRow]) -> Option<Result<Vec<(Value, Value)>>> {
-        let fine = match self.run_shell_energies(&self.runs[0])? {
+    /// A deformable striker's (strain, vibration kinetic) energy over rho c1^2 R^2 at the
+    /// times of `rows` (from [`SolvedImpact::history`]), each with an error estimate: four
+    /// times the difference between the two finest levels (the factor of the history's
+    /// estimates), plus the coefficients' bound and the modal truncation's estimate
+    /// ([`SolvedImpact::striker_energies`]). `None` for the strikers without them.
+    pub fn striker_energy_history(
+        &self,
+        rows: &[HistoryRow],
+    ) -> Option<Result<Vec<(Value, Value)>>> {
+        let fine = match self.run_striker_energies(&self.runs[0])? {
             Ok(v) => v,
             Err(e) => return Some(Err(e)),
         };
-        let coarse = match self.runs.get(1).map(|r| self.run_shell_energies(r)) {
+        let coarse = match self.runs.get(1).map(|r| self.run_striker_energies(r)) {
             Some(Some(Ok(v))) => Some(v),
             Some(Some(Err(e))) => return Some(Err(e)),
             _ => None,
         };
-        let at = |list: &[(f64, f64, f64)], dt: f64, t: f64| -> Option<(f64, f64)> {
+        let at = |list: &[StrikerEnergyStep], dt: f64, t: f64| -> Option<(f64, f64, f64)> {
             let n = (t / dt).round() as usize;
             (n >= 1)
-                .then(|| list.get(n - 1).map(|e| (e.1, e.2)))
+                .then(|| list.get(n - 1).map(|e| (e.strain, e.kinetic, e.truncation)))
                 .flatten()
         };
         let mut out = Vec::with_capacity(rows.len());
         for r in rows {
-            let (u, k) = match at(&fine, self.runs[0].dt, r.t) {
+            let (u, k, trunc) = match at(&fine, self.runs[0].dt, r.t) {
                 Some(v) => v,
                 None => {
                     return Some(Err(ImpactError::Step {
@@ -593,10 +657,10 @@ impl SolvedImpact<f64> {
                     }))
                 }
             };
-            let floor = self.runs[0].coefficient_error * (u + k).abs();
+            let floor = self.runs[0].coefficient_error * (u + k).abs() + trunc;
             let err = coarse.as_ref().and_then(|c| {
                 at(c, self.runs[1].dt, r.t)
-                    .map(|(uc, kc)| (4.0 * (u - uc).abs() + floor, 4.0 * (k - kc).abs() + floor))
+                    .map(|(uc, kc, _)| (4.0 * (u - uc).abs() + floor, 4.0 * (k - kc).abs() + floor))
             });
             out.push((
                 Value {

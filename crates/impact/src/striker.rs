@@ -11,7 +11,7 @@
 //!
 //! Units as in the march: c1 = 1 and mu = 1 of the half-plane, lengths in R.
 
-mod cylinder;
+pub mod cylinder;
 pub mod disk;
 pub mod green;
 

@@ -488,7 +488,21 @@ impl Disk {
         offsets: usize,
         steps: usize,
     ) -> Result<LatticeStepResponse> {
-        self.lattice_rows(dx, dt, 0..offsets + 1, steps)
+        self.lattice_rows(dx, dt, 0..offsets + 1, steps, 1.0)
+    }
+
+    /// [`Disk::lattice_step_response`] with the inversion's highest frequency (and with it
+    /// the harmonics kept) multiplied by `refine` in [0.25, 16], as
+    /// [`Disk::arc_step_response_refined`].
+    pub fn lattice_step_response_refined(
+        &self,
+        dx: f64,
+        dt: f64,
+        offsets: usize,
+        steps: usize,
+        refine: f64,
+    ) -> Result<LatticeStepResponse> {
+        self.lattice_rows(dx, dt, 0..offsets + 1, steps, refine)
     }
 
     /// [`Disk::lattice_step_response`] for the receiver offsets `offsets` alone (rows
@@ -499,7 +513,11 @@ impl Disk {
         dt: f64,
         offsets: std::ops::Range<usize>,
         steps: usize,
+        refine: f64,
     ) -> Result<LatticeStepResponse> {
+        if !(0.25..=16.0).contains(&refine) {
+            return Err(invalid("refinement", refine, "[0.25, 16]"));
+        }
         if !(dx >= ARC_RANGE.0 && dx <= ARC_RANGE.1) {
             return Err(invalid("arc over R", dx, format!("[{}, pi]", ARC_RANGE.0)));
         }
@@ -521,7 +539,7 @@ impl Disk {
         let theta0 = 0.5 * dx;
         let t_max = steps as f64 * dt;
         let m = (2.0 * PERIOD_OVER_T * steps as f64).ceil() as usize;
-        let inv = Inversion::new(theta0, 0.5 * m as f64 * dt, 1.0, dx, t_max)?;
+        let inv = Inversion::new(theta0, 0.5 * m as f64 * dt, refine, dx, t_max)?;
         let angles: Vec<f64> = offsets.clone().map(|k| k as f64 * dx).collect();
         let hp = HalfPlane::from_poisson(self.poisson())?;
         let samples = self.remainder_samples(theta0, &angles, &inv)?;
