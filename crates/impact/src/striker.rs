@@ -182,6 +182,7 @@ impl Striker {
                 Some(Compliance::Elastic {
                     tables: Box::new(Tables::new(hp, kappa * mat.c1_ratio)?),
                     scale: 1.0 / mat.shear_modulus_ratio(m),
+                    omitted: None,
                 })
             }
             Striker::Shell(s) => Some(Compliance::Shell(ShellTable::new(
@@ -189,12 +190,53 @@ impl Striker {
                 dx,
                 kappa * dx,
             )?)),
-            Striker::Cylinder(mat) => Some(Compliance::Cylinder {
-                table: CylinderTable::new(mat, dx, kappa * dx, horizon)?,
-                scale: 1.0 / mat.shear_modulus_ratio(m),
-            }),
+            Striker::Cylinder(mat) => Some(cylinder_compliance(mat, m, dx, kappa, horizon)?),
         })
     }
+}
+
+/// The largest share of a coefficient (mu/mu_s times twice the bound of the deformation
+/// response over dx) that a stiff cylinder may leave out: below it the cylinder's table is its
+/// local half-plane model's, with that bound in its error (`docs/strikers.md`, section 8).
+pub const STIFF_OMISSION: f64 = 1e-4;
+
+/// The cylinder's compliance: a stiff one's local half-plane tables with the bound of what
+/// they leave out (the response beyond the local model, D, within twice the quasi-static
+/// compliance plus the local response itself), when that bound is below [`STIFF_OMISSION`] at
+/// the horizon; the free disk's lattice response otherwise.
+fn cylinder_compliance(
+    mat: &StrikerMaterial,
+    m: f64,
+    dx: f64,
+    kappa: f64,
+    horizon: usize,
+) -> Result<Compliance> {
+    let scale = 1.0 / mat.shear_modulus_ratio(m);
+    let quasi_static = disk::Disk::new(mat.poisson())?.inertia_relief_compliance(dx)?;
+    let hp = HalfPlane::new(mat.c2_ratio / mat.c1_ratio)?;
+    // the local response's size at the horizon (the striker's units: c1s = 1, mu_s = 1)
+    let t_end = (horizon.max(1) as f64 * kappa * dx) * mat.c1_ratio;
+    let (local, local_err) = green::half_plane_strip(&hp, 0.5 * dx, 0.0, t_end)?;
+    let estimate = scale * 2.0 * (2.0 * quasi_static + 2.0 * (local.abs() + local_err)) / dx;
+    if estimate <= STIFF_OMISSION {
+        return Ok(Compliance::Elastic {
+            tables: Box::new(Tables::new(hp, kappa * mat.c1_ratio)?),
+            scale,
+            omitted: Some(Omitted { quasi_static, dx }),
+        });
+    }
+    Ok(Compliance::Cylinder {
+        table: CylinderTable::new(mat, dx, kappa * dx, horizon)?,
+        scale,
+    })
+}
+
+/// What a stiff cylinder's local tables leave out: its deformation response beyond the local
+/// model, bounded by twice the quasi-static compliance `quasi_static` (units p0 R/mu_s, arcs
+/// of width `dx`) plus the local response itself.
+pub(crate) struct Omitted {
+    quasi_static: f64,
+    dx: f64,
 }
 
 /// The striker's cell coefficients, in the normalisation of [`Tables`]: the mean striker
@@ -208,6 +250,8 @@ pub(crate) enum Compliance {
         tables: Box<Tables>,
         /// mu/mu_s.
         scale: f64,
+        /// For a stiff cylinder, the bound of the response the local model leaves out.
+        omitted: Option<Omitted>,
     },
     /// The shell's modal sums.
     Shell(ShellTable),
@@ -234,7 +278,32 @@ impl Compliance {
     /// estimate so far, or the shell's truncation bound).
     pub(crate) fn error(&self) -> f64 {
         match self {
-            Compliance::Elastic { tables, scale } => tables.error() * scale,
+            Compliance::Elastic {
+                tables,
+                scale,
+                omitted,
+            } => {
+                let mut e = tables.error() * scale;
+                if let Some(o) = omitted {
+                    // |D| <= 2 quasi-static + |local|, the local step response from the rows
+                    // computed (dx = 1 normalisation: S = dx sum_l a); a coefficient is a
+                    // difference of two values of D, over dx
+                    let width = (0..tables.rows()).map(|l| tables.row(l).len()).min();
+                    let mut largest: f64 = 0.0;
+                    if let Some(width) = width {
+                        let mut sums = vec![0.0; width];
+                        for l in 0..tables.rows() {
+                            for (acc, a) in sums.iter_mut().zip(tables.row(l)) {
+                                *acc += a;
+                                largest = largest.max(acc.abs());
+                            }
+                        }
+                    }
+                    let bound = 2.0 * o.quasi_static + o.dx * largest;
+                    e += scale * 2.0 * bound / o.dx;
+                }
+                e
+            }
             Compliance::Shell(t) => t.error(),
             Compliance::Cylinder { table, scale } => table.error() * scale,
         }
@@ -252,7 +321,7 @@ impl Compliance {
     /// The unscaled row c(., l) and its scale.
     pub(crate) fn row(&self, l: usize) -> (&[f64], f64) {
         match self {
-            Compliance::Elastic { tables, scale } => (tables.row(l), *scale),
+            Compliance::Elastic { tables, scale, .. } => (tables.row(l), *scale),
             Compliance::Shell(t) => (t.row(l), 1.0),
             Compliance::Cylinder { table, scale } => (table.row(l), *scale),
         }

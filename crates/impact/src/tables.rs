@@ -166,6 +166,11 @@ impl<T: Scalar + CachedRules> Tables<T> {
     pub fn row(&self, l: usize) -> &[T] {
         &self.a[l]
     }
+
+    /// The rows computed so far: a(., l) for l below it.
+    pub fn rows(&self) -> usize {
+        self.a.len()
+    }
 }
 
 #[cfg(test)]

@@ -447,9 +447,8 @@ impl Disk {
 /// The half-plane's mean displacement over the strip of half-width theta0 centred at
 /// `angle` (arc length), due to the unit pressure on the strip |x| <= theta0 switched on at
 /// time 0, summed over the images angle + 2 pi m, at `time` in the Lamb crate's units
-/// (c1 = 1, mu = 1): with Xi the triple primitive, each image is
-/// [Xi(d + 2 theta0) - 2 Xi(d) + Xi(d - 2 theta0)]/(2 theta0); images beyond the P front
-/// give 0 exactly (Xi is linear in X there). Returns the value and its error bound.
+/// (c1 = 1, mu = 1): each image is [`half_plane_strip`]; images beyond the P front give 0
+/// exactly. Returns the value and its error bound.
 fn periodised_half_plane(
     hp: &HalfPlane<f64>,
     theta0: f64,
@@ -465,13 +464,79 @@ fn periodised_half_plane(
         if d.abs() >= reach {
             continue;
         }
-        for (x, c) in [(d + 2.0 * theta0, 1.0), (d, -2.0), (d - 2.0 * theta0, 1.0)] {
-            let xi = hp.cell_mean_primitive_zz(&x, &time)?;
-            value += c * xi.value;
-            error += c.abs() * xi.error;
-        }
+        let (v, e) = half_plane_strip(hp, theta0, d, time)?;
+        value += v;
+        error += e;
+    }
+    Ok((value, error))
+}
+
+/// The half-plane's mean displacement over the strip of half-width theta0 at the distance
+/// `d`, due to the unit pressure on the strip |x| <= theta0 switched on at time 0, at `time`
+/// (the Lamb crate's units, c1 = 1, mu = 1): with Xi the triple primitive,
+/// [Xi(d + 2 theta0) - 2 Xi(d) + Xi(d - 2 theta0)]/(2 theta0), with its error bound.
+pub(crate) fn half_plane_strip(
+    hp: &HalfPlane<f64>,
+    theta0: f64,
+    d: f64,
+    time: f64,
+) -> Result<(f64, f64)> {
+    let (mut value, mut error) = (0.0, 0.0);
+    for (x, c) in [(d + 2.0 * theta0, 1.0), (d, -2.0), (d - 2.0 * theta0, 1.0)] {
+        let xi = hp.cell_mean_primitive_zz(&x, &time)?;
+        value += c * xi.value;
+        error += c.abs() * xi.error;
     }
     Ok((value / (2.0 * theta0), error / (2.0 * theta0)))
+}
+
+impl Disk {
+    /// The quasi-static deformation of the free disk (units p0 R/mu_s) under the unit
+    /// pressure on the arc |theta| <= arc/2, balanced by its own uniform inertia (the rigid
+    /// translation's pole taken out), averaged over the same arc:
+    /// sum_n p_n sinc(n theta0) lim_(s -> 0) [W_n(s) - (1/s^2 at n = 1)], summed to
+    /// n = 100/theta0 with a bound of the rest added, and evaluated at s =
+    /// [`super::disk::SMALLEST_S`] (relative error about 1e-8). It is the sum over the elastic modes of r/omega^2, so the deformation step
+    /// response over any arc of the same width stays within twice it at all times (each mode
+    /// within twice its static part, the cross terms by Cauchy-Schwarz): the bound of a stiff
+    /// cylinder's omitted response (`docs/strikers.md`, section 8).
+    pub fn inertia_relief_compliance(&self, arc: f64) -> Result<f64> {
+        if !(arc >= ARC_RANGE.0 && arc <= ARC_RANGE.1) {
+            return Err(invalid("arc over R", arc, format!("[{}, pi]", ARC_RANGE.0)));
+        }
+        let theta0 = 0.5 * arc;
+        let s = super::disk::SMALLEST_S;
+        let sc = Complex64::new(s, 0.0);
+        let top = (100.0 / theta0).ceil() as u32;
+        let (mut sum, mut last) = (0.0, 0.0);
+        for n in 0..=top {
+            let nf = f64::from(n);
+            let w = if n == 0 {
+                theta0 / PI
+            } else {
+                2.0 * (nf * theta0).sin() / (nf * PI) * sinc(nf * theta0)
+            };
+            let mut v = self.harmonic(n, sc)?.re;
+            if n == 1 {
+                v -= 1.0 / (s * s);
+            }
+            sum += w * v;
+            last = nf * v.abs();
+        }
+        // beyond, |w_n| <= 2/(pi theta0 n^2) and |W_n| ~ C/n with C the last n |W_n|: the
+        // tail is within C/(pi theta0 N^2), added (twice) to make the value a bound
+        let n = f64::from(top);
+        let sum = sum + 2.0 * last / (PI * theta0 * n * n);
+        if !sum.is_finite() {
+            return Err(ImpactError::Step {
+                time: "0".into(),
+                reason: format!(
+                    "the disk's quasi-static compliance over the arc {arc} is not finite"
+                ),
+            });
+        }
+        Ok(sum)
+    }
 }
 
 impl Disk {
