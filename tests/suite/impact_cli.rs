@@ -523,6 +523,37 @@ fn run_deformable_strikers() {
     let total = last("striker_energy_over_rho_c1sq_Rsq");
     assert!((parts - total).abs() < 1e-9 * total, "{parts} vs {total}");
 
+    // the full cylinder: its mass from its geometry, its energies in two parts
+    let mut args = base.to_vec();
+    args.extend([
+        "--striker",
+        "cylinder:c1=1870.83,c2=1000,density_ratio=1",
+        "--end",
+        "c1t/R=1",
+        "--levels",
+        "2",
+    ]);
+    let v = json(&args);
+    assert_eq!(v["striker"], "cylinder");
+    let mass = num(&v["striker_model"]["mass_ratio"]);
+    assert!((mass - std::f64::consts::PI).abs() < 1e-12);
+    assert!((num(&v["mass_ratio"]) - mass).abs() < 1e-12);
+    let n = v["c1t_over_R"].as_array().unwrap().len();
+    let last = |k: &str| num(&v[k][n - 1]);
+    for k in [
+        "striker_deformation_over_R",
+        "striker_energy_over_rho_c1sq_Rsq",
+        "striker_strain_energy_over_rho_c1sq_Rsq",
+        "striker_vibration_energy_over_rho_c1sq_Rsq",
+    ] {
+        assert_eq!(v[k].as_array().unwrap().len(), n, "{k}");
+        assert!(v["error_estimate"][k][n - 1].is_number(), "{k}");
+        assert!(last(k) > 0.0, "{k}");
+    }
+    let parts = last("striker_strain_energy_over_rho_c1sq_Rsq")
+        + last("striker_vibration_energy_over_rho_c1sq_Rsq");
+    assert!((parts - last("striker_energy_over_rho_c1sq_Rsq")).abs() < 1e-9 * parts);
+
     // elastic, driven flat punch: the plane-wave pressure of two impedances in series
     let (c1, rho_ratio, c1s) = (1870.83, 2.0, 4000.0);
     let v = json(&[
@@ -597,6 +628,26 @@ fn run_deformable_strikers() {
             ],
             "thickness",
         ),
+        (
+            vec![
+                "--striker",
+                "cylinder:c1=5900,c2=3200,density_ratio=3",
+                "--mass-ratio",
+                "2",
+                "--end",
+                "c1t/R=1",
+            ],
+            "--mass-ratio",
+        ),
+        (
+            vec![
+                "--striker",
+                "cylinder:c1=5900,c2=3200,density_ratio=3",
+                "--end",
+                "c1t/R=400",
+            ],
+            "end time",
+        ),
     ] {
         let mut args = base.to_vec();
         args.extend(extra);
@@ -605,6 +656,28 @@ fn run_deformable_strikers() {
         assert_eq!(err.lines().count(), 1, "{args:?}: {err}");
         assert!(err.contains(word), "{args:?}: {err}");
     }
+    // the cylinder's own profile only
+    let (code, _, err) = impact(&[
+        "run",
+        "--c1",
+        "1870.83",
+        "--c2",
+        "1000",
+        "--striker",
+        "cylinder:c1=5900,c2=3200,density_ratio=3",
+        "--profile",
+        "wedge:theta_deg=10",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "c1t/R=0.5",
+    ]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("profile") && err.contains("circle:R=1"),
+        "{err}"
+    );
     let (code, _, err) = impact(&[
         "run",
         "--poisson",

@@ -180,11 +180,11 @@ fn help_says_what_each_program_is() {
     let (_, impact_help, _) = call(IMPACT, &["--help"]);
     let first = impact_help.lines().next().unwrap();
     assert!(first.contains("transient impact"), "{first}");
-    for kind in ["rigid", "elastic", "shell"] {
+    for kind in ["rigid", "elastic", "cylinder", "shell"] {
         assert!(impact_help.contains(kind), "impact --help: {kind}");
     }
     let (_, run_help, _) = call(IMPACT, &["run", "--help"]);
-    for kind in ["rigid", "elastic", "shell"] {
+    for kind in ["rigid", "elastic", "cylinder", "shell"] {
         assert!(run_help.contains(kind), "impact run --help: {kind}");
     }
 }

@@ -5,6 +5,7 @@
 mod common;
 
 mod bridge;
+mod cylinder;
 mod disk;
 mod edge_exponents;
 mod green;
