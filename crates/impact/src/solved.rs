@@ -9,6 +9,7 @@ use crate::error::{ImpactError, Result};
 use crate::march::EdgeLaw;
 use crate::run::Run;
 use crate::scalar::Scalar;
+use crate::striker::cylinder::DiskModes;
 use crate::striker::disk::Disk;
 use crate::striker::{shell_energies, Ring, Striker};
 
@@ -554,22 +555,39 @@ pub struct StrikerEnergyStep {
 /// The highest frequency (units c2s/R) of the free disk's modes that carry a cylinder
 /// striker's vibration energy: the kinetic energy converges like about 1/omega_max (its
 /// change per doubling falls by 2.3 to 2.8 on the reference case, about 1e-3 of it at 64).
-pub const CYLINDER_MODES_BELOW: f64 = 64.0;
+pub const CYLINDER_MODES_BELOW: f64 = 32.0;
 
 impl SolvedImpact<f64> {
     /// A deformable striker's strain and vibration kinetic energy over rho c1^2 R^2 after
     /// each step of the finest grid: the shell's by the
     /// modal recursion of [`shell_energies`] (independent of the coefficient tables; its
     /// truncation is in the coefficients' bound, so 0 here); the cylinder's vibration by the
-    /// free disk's modes below [`CYLINDER_MODES_BELOW`] ([`crate::striker::cylinder::DiskModes::energies`]), its strain
+    /// free disk's modes below [`CYLINDER_MODES_BELOW`] ([`DiskModes::energies`]), its strain
     /// the work done on its deformation less the vibration, and the truncation's estimate
     /// twice the change from the modes below half that frequency (`docs/strikers.md`, section
     /// 8). `None` for the other strikers.
     pub fn striker_energies(&self) -> Option<Result<Vec<StrikerEnergyStep>>> {
-        self.run_striker_energies(&self.runs[0])
+        let modes = match self.cylinder_modes().transpose() {
+            Ok(m) => m,
+            Err(e) => return Some(Err(e)),
+        };
+        self.run_striker_energies(&self.runs[0], modes.as_ref())
     }
 
-    fn run_striker_energies(&self, run: &Run) -> Option<Result<Vec<StrikerEnergyStep>>> {
+    /// The free disk's modes of a cylinder striker ([`CYLINDER_MODES_BELOW`]), once for
+    /// every level; `None` for the other strikers.
+    fn cylinder_modes(&self) -> Option<Result<DiskModes>> {
+        let Striker::Cylinder(mat) = &self.case.striker else {
+            return None;
+        };
+        Some(Disk::new(mat.poisson()).and_then(|d| d.modes(CYLINDER_MODES_BELOW)))
+    }
+
+    fn run_striker_energies(
+        &self,
+        run: &Run,
+        modes: Option<&DiskModes>,
+    ) -> Option<Result<Vec<StrikerEnergyStep>>> {
         let m2 = self.m * self.m;
         let pressures =
             || -> Vec<Vec<f64>> { run.steps.iter().map(|s| s.pressure.clone()).collect() };
@@ -596,7 +614,10 @@ impl SolvedImpact<f64> {
                     .into_iter()
                     .map(|p| p.into_iter().map(|v| v / g).collect())
                     .collect();
-                let modes = Disk::new(mat.poisson())?.modes(CYLINDER_MODES_BELOW)?;
+                let modes = modes.ok_or_else(|| ImpactError::Step {
+                    time: "0".into(),
+                    reason: "the cylinder's modes were not computed".into(),
+                })?;
                 let dtau = run.dt * mat.c2_ratio;
                 let all = modes.energies(run.dx, dtau, &scaled);
                 let half = modes
@@ -631,11 +652,19 @@ impl SolvedImpact<f64> {
         &self,
         rows: &[HistoryRow],
     ) -> Option<Result<Vec<(Value, Value)>>> {
-        let fine = match self.run_striker_energies(&self.runs[0])? {
+        let modes = match self.cylinder_modes().transpose() {
+            Ok(m) => m,
+            Err(e) => return Some(Err(e)),
+        };
+        let fine = match self.run_striker_energies(&self.runs[0], modes.as_ref())? {
             Ok(v) => v,
             Err(e) => return Some(Err(e)),
         };
-        let coarse = match self.runs.get(1).map(|r| self.run_striker_energies(r)) {
+        let coarse = match self
+            .runs
+            .get(1)
+            .map(|r| self.run_striker_energies(r, modes.as_ref()))
+        {
             Some(Some(Ok(v))) => Some(v),
             Some(Some(Err(e))) => return Some(Err(e)),
             _ => None,

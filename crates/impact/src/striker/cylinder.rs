@@ -15,19 +15,17 @@
 //! equation of motion carries, with the mass pi R^2 rho_s of the disk.
 
 use super::disk::Disk;
+use super::green::LatticeAccuracy;
 use super::StrikerMaterial;
 use crate::error::{invalid, Result};
 
-/// The lattice's refinement ([`Disk::lattice_step_response_refined`]): a quarter of the
-/// frequencies and harmonics of the influence function's default, whose 1e-6 the march does
-/// not need; its coefficients' error, stated with them, is about 2e-3 of the largest
-/// (measured at R/200: 1.2e-3 actual against 2.0e-3 stated, at the fronts of the waves
-/// reflected from the far side), for a sixteenth of the work.
-const REFINE: f64 = 0.25;
-
 /// The first width of the table (offsets): each growth repeats the frequency samples, whose
-/// cost is most of a table's, so the first width is a typical contact's.
-const FIRST_WIDTH: usize = 64;
+/// cost is most of a table's, so the first width serves a history 64 cells wide (2 x 64 + 1
+/// columns and the margin).
+const FIRST_WIDTH: usize = 137;
+
+/// The offsets added beyond a request.
+const GROWTH_MARGIN: usize = 8;
 
 /// The most rows computed at first: a run to its separation has an open horizon, and its
 /// table grows by doubling (each growth repeats the whole table, so at most twice the work).
@@ -122,10 +120,20 @@ impl CylinderTable {
         if kmax < have_k && !self.c.is_empty() {
             return Ok(());
         }
-        let width = (kmax + 1).max(2 * have_k).max(FIRST_WIDTH);
-        let lattice = self
-            .disk
-            .lattice_rows(self.dx, self.dt, have_k..width, self.rows, REFINE)?;
+        // a growth repeats the frequency samples (most of a table's cost): at least double,
+        // with a margin (the history's requests are 2W + 1 columns, W a power of two)
+        let width = if have_k == 0 {
+            (kmax + 1 + GROWTH_MARGIN).max(FIRST_WIDTH)
+        } else {
+            (kmax + 1).max(2 * have_k) + GROWTH_MARGIN
+        };
+        let lattice = self.disk.lattice_rows(
+            self.dx,
+            self.dt,
+            have_k..width,
+            self.rows,
+            LatticeAccuracy::MARCH,
+        )?;
         if self.c.is_empty() {
             self.c = vec![Vec::with_capacity(width); self.rows];
         }

@@ -65,6 +65,36 @@ const PERIOD_OVER_T: f64 = 4.0;
 /// bounded remainder, the latest time's errors are amplified by e^(sigma T/4) = 9.5.
 const SIGMA_T: f64 = 9.0;
 
+/// The inversion's parameters on a lattice: the highest frequency's factor, the harmonics per
+/// unit of it and the half-period over the last time.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LatticeAccuracy {
+    pub(crate) refine: f64,
+    pub(crate) harmonics_per_omega: f64,
+    pub(crate) period_over_t: f64,
+}
+
+impl LatticeAccuracy {
+    /// The influence function's own (the arcs' route, 1e-6 of the peak).
+    const FULL: LatticeAccuracy = LatticeAccuracy {
+        refine: 1.0,
+        harmonics_per_omega: HARMONICS_PER_OMEGA,
+        period_over_t: PERIOD_OVER_T,
+    };
+
+    /// The march's: a quarter of the frequencies, half the harmonics per frequency and half
+    /// the period (the latest time's errors amplified by e^(sigma T/2) = 90 rather than 9.5),
+    /// for a thirty-second of the work. Measured at R/200 against the full accuracy: the
+    /// coefficients' error 1.2e-3 of the largest (2.0e-3 stated, at the fronts of the waves
+    /// reflected from the far side), unchanged by the halvings, and the march's force changed
+    /// by 5e-6 of its peak (`docs/strikers.md`, section 8).
+    pub(crate) const MARCH: LatticeAccuracy = LatticeAccuracy {
+        refine: 0.25,
+        harmonics_per_omega: 0.4,
+        period_over_t: 2.0,
+    };
+}
+
 /// The step response of a free disk to a pressure on an arc, averaged over arcs of the same
 /// width: [`Disk::arc_step_response`].
 #[derive(Clone, Debug)]
@@ -191,7 +221,14 @@ impl Disk {
         let c1 = self.c1();
         let theta0 = 0.5 * arc;
         let t_max = times.iter().copied().fold(0.0, f64::max);
-        let inv = Inversion::new(theta0, PERIOD_OVER_T * t_max, refine, arc, t_max)?;
+        let inv = Inversion::new(
+            theta0,
+            PERIOD_OVER_T * t_max,
+            refine,
+            HARMONICS_PER_OMEGA,
+            arc,
+            t_max,
+        )?;
         // the half-plane first: it refuses a Poisson's ratio of 0 before the long part
         let hp = HalfPlane::from_poisson(self.poisson())?;
         let samples = self.remainder_samples(theta0, angles, &inv)?;
@@ -267,13 +304,21 @@ struct Inversion {
 
 impl Inversion {
     /// For arcs of half-width `theta0` and the half-period `period_half`, the highest
-    /// frequency multiplied by `refine`; refused (naming the arc) above [`WORK_LIMIT`].
-    fn new(theta0: f64, period_half: f64, refine: f64, arc: f64, t_max: f64) -> Result<Self> {
+    /// frequency multiplied by `refine`, `harmonics_per_omega` harmonics per unit of it;
+    /// refused (naming the arc) above [`WORK_LIMIT`].
+    fn new(
+        theta0: f64,
+        period_half: f64,
+        refine: f64,
+        harmonics_per_omega: f64,
+        arc: f64,
+        t_max: f64,
+    ) -> Result<Self> {
         let omega = refine
             * (OMEGA_THETA / theta0)
                 .max(OMEGA_MIN)
                 .max(FREQUENCIES_MIN * PI / period_half);
-        let nmax = (HARMONICS_PER_OMEGA * omega).ceil() as usize;
+        let nmax = (harmonics_per_omega * omega).ceil() as usize;
         let kmax = (omega * period_half / PI).ceil() as usize;
         let work = (kmax + 1) as f64 * (nmax as f64 + 2.0 * omega);
         if work > WORK_LIMIT {
@@ -378,14 +423,13 @@ impl Disk {
                 }
             })
             .collect();
-        let weights: Vec<Vec<f64>> = angles
+        // each harmonic's weights at every receiver, [n][j] (contiguous in j: the sum over
+        // the receivers is the inner loop)
+        let nj = angles.len();
+        let weights: Vec<f64> = base
             .iter()
-            .map(|a| {
-                base.iter()
-                    .enumerate()
-                    .map(|(n, b)| b * (n as f64 * a).cos())
-                    .collect()
-            })
+            .enumerate()
+            .flat_map(|(n, b)| angles.iter().map(move |a| b * (n as f64 * a).cos()))
             .collect();
         // the harmonics' terms fall like n^-4: the last quarter changes the sum by about 1.4
         // times what the harmonics beyond N would
@@ -398,25 +442,41 @@ impl Disk {
             ratio_terms(s, &mut dg);
             let y2 = s * s;
             let pole = y2.inv();
-            let mut full = vec![Complex64::new(0.0, 0.0); angles.len()];
-            let mut half = full.clone();
             let mut rounding = 0.0;
-            for n in 0..=nmax {
-                let nf = n as f64;
-                let w = transfer(nf, df[n], dg[n], y2);
-                let e = match n {
-                    0 => w,
-                    1 => w - half_plane_transfer(c1, nf, s) - pole,
-                    _ => w - half_plane_transfer(c1, nf, s),
-                };
-                rounding += base[n].abs() * (w.l1_norm() + e.l1_norm()); // bounds the moduli
-                for (acc, wt) in full.iter_mut().zip(&weights) {
-                    *acc += e * wt[n];
+            // the remainder's terms E_n, then their sums at every receiver
+            let terms: Vec<Complex64> = (0..=nmax)
+                .map(|n| {
+                    let nf = n as f64;
+                    let w = transfer(nf, df[n], dg[n], y2);
+                    let e = match n {
+                        0 => w,
+                        1 => w - half_plane_transfer(c1, nf, s) - pole,
+                        _ => w - half_plane_transfer(c1, nf, s),
+                    };
+                    rounding += base[n].abs() * (w.l1_norm() + e.l1_norm()); // bounds the moduli
+                    e
+                })
+                .collect();
+            let (mut re, mut im) = (vec![0.0; nj], vec![0.0; nj]);
+            let mut half = Vec::new();
+            let accumulate = |range: std::ops::Range<usize>, re: &mut [f64], im: &mut [f64]| {
+                for n in range {
+                    let (er, ei) = (terms[n].re, terms[n].im);
+                    let row = &weights[n * nj..(n + 1) * nj];
+                    for ((r, i), w) in re.iter_mut().zip(im.iter_mut()).zip(row) {
+                        *r += er * w;
+                        *i += ei * w;
+                    }
                 }
-                if n == half_n {
-                    half.copy_from_slice(&full);
-                }
-            }
+            };
+            accumulate(0..half_n + 1, &mut re, &mut im);
+            half.extend(re.iter().zip(&im).map(|(r, i)| Complex64::new(*r, *i)));
+            accumulate(half_n + 1..nmax + 1, &mut re, &mut im);
+            let full = re
+                .iter()
+                .zip(&im)
+                .map(|(r, i)| Complex64::new(*r, *i))
+                .collect();
             Sample {
                 full,
                 half,
@@ -553,7 +613,7 @@ impl Disk {
         offsets: usize,
         steps: usize,
     ) -> Result<LatticeStepResponse> {
-        self.lattice_rows(dx, dt, 0..offsets + 1, steps, 1.0)
+        self.lattice_rows(dx, dt, 0..offsets + 1, steps, LatticeAccuracy::FULL)
     }
 
     /// [`Disk::lattice_step_response`] with the inversion's highest frequency (and with it
@@ -567,7 +627,16 @@ impl Disk {
         steps: usize,
         refine: f64,
     ) -> Result<LatticeStepResponse> {
-        self.lattice_rows(dx, dt, 0..offsets + 1, steps, refine)
+        self.lattice_rows(
+            dx,
+            dt,
+            0..offsets + 1,
+            steps,
+            LatticeAccuracy {
+                refine,
+                ..LatticeAccuracy::FULL
+            },
+        )
     }
 
     /// [`Disk::lattice_step_response`] for the receiver offsets `offsets` alone (rows
@@ -578,8 +647,9 @@ impl Disk {
         dt: f64,
         offsets: std::ops::Range<usize>,
         steps: usize,
-        refine: f64,
+        accuracy: LatticeAccuracy,
     ) -> Result<LatticeStepResponse> {
+        let refine = accuracy.refine;
         if !(0.25..=16.0).contains(&refine) {
             return Err(invalid("refinement", refine, "[0.25, 16]"));
         }
@@ -603,8 +673,15 @@ impl Disk {
         let c1 = self.c1();
         let theta0 = 0.5 * dx;
         let t_max = steps as f64 * dt;
-        let m = (2.0 * PERIOD_OVER_T * steps as f64).ceil() as usize;
-        let inv = Inversion::new(theta0, 0.5 * m as f64 * dt, refine, dx, t_max)?;
+        let m = (2.0 * accuracy.period_over_t * steps as f64).ceil() as usize;
+        let inv = Inversion::new(
+            theta0,
+            0.5 * m as f64 * dt,
+            refine,
+            accuracy.harmonics_per_omega,
+            dx,
+            t_max,
+        )?;
         let angles: Vec<f64> = offsets.clone().map(|k| k as f64 * dx).collect();
         let hp = HalfPlane::from_poisson(self.poisson())?;
         let samples = self.remainder_samples(theta0, &angles, &inv)?;
