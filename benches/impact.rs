@@ -14,6 +14,12 @@
 //! angles, c2s t/R = 0.1, 1, 8), for arc 0.05 to c2s t/R = 10 and for arc 0.02 to 50 (the
 //! cost grows like t_max/arc^2), all threads.
 //!
+//! The cylinder group: the reference case's parabola (to c1 t/R = 10, V0/c1 = 0.01) with the
+//! full elastic cylinder of the half-plane's own material (mass pi rho R^2) beside the rigid
+//! striker of the same mass, three grids at R/200 (the ratio of their times printed after the
+//! group), and the cylinder on one grid at R/50, R/100 and R/200 (its cost against 1/dx), all
+//! threads.
+//!
 //! Run: `cargo bench --bench impact`.
 
 use std::cell::RefCell;
@@ -167,11 +173,92 @@ fn striker_green(c: &mut Criterion) {
     g.finish();
 }
 
+/// The median time per call of `f` over criterion's samples, benched under `name`.
+fn timed(
+    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    name: BenchmarkId,
+    case: &ImpactCase,
+) -> Option<f64> {
+    let times = RefCell::new(Vec::new());
+    g.bench_with_input(name, case, |b, case| {
+        b.iter_custom(|iters| {
+            let t0 = Instant::now();
+            for _ in 0..iters {
+                black_box(case.solve(|_| {}).unwrap());
+            }
+            let e = t0.elapsed();
+            times.borrow_mut().push(e.as_secs_f64() / iters as f64);
+            e
+        })
+    });
+    let mut t = times.into_inner();
+    t.sort_by(f64::total_cmp);
+    t.get(t.len() / 2).copied()
+}
+
+/// The cylinder striker beside the rigid one of the same mass (the reference grid), and its
+/// cost against the cell width.
+fn cylinder(c: &mut Criterion) {
+    let mut g = c.benchmark_group("cylinder");
+    g.sample_size(10);
+    let m = ImpactCase::reference(EdgeLaw::Signorini).poisson;
+    let m = ((1.0 - 2.0 * m) / (2.0 * (1.0 - m))).sqrt();
+    let own = Striker::Cylinder(StrikerMaterial {
+        c1_ratio: 1.0,
+        c2_ratio: m,
+        density_ratio: 1.0,
+    });
+    let parabola = |dx: f64, levels: usize| {
+        let mut case = reference(dx, levels, std::f64::consts::PI);
+        case.profile = impact::Profile::Parabola { radius: 1.0 };
+        case
+    };
+    let rigid = timed(
+        &mut g,
+        BenchmarkId::new("rigid_mass_pi", "R_over_dx=200, levels=3"),
+        &parabola(0.005, 3),
+    );
+    let cyl = timed(
+        &mut g,
+        BenchmarkId::new("cylinder_own_material", "R_over_dx=200, levels=3"),
+        &parabola(0.005, 3).with_striker(own),
+    );
+    let mut rows = Vec::new();
+    for r_over_dx in [50.0, 100.0, 200.0] {
+        let t = timed(
+            &mut g,
+            BenchmarkId::new(
+                "cylinder_own_material",
+                format!("R_over_dx={r_over_dx}, levels=1"),
+            ),
+            &parabola(1.0 / r_over_dx, 1).with_striker(own),
+        );
+        if let Some(t) = t {
+            rows.push((r_over_dx, t));
+        }
+    }
+    g.finish();
+    if let (Some(r), Some(c)) = (rigid, cyl) {
+        println!("cylinder against the rigid striker of mass pi, three grids at R/200: {c:.3} s against {r:.3} s, ratio {:.2}", c / r);
+    }
+    for (r, t) in &rows {
+        println!("  cylinder, one grid, R/dx = {r:4}: {t:.3} s");
+    }
+    let pts: Vec<(f64, f64)> = rows.iter().map(|r| (r.0, r.1)).collect();
+    if pts.len() > 1 {
+        println!(
+            "  fitted exponent of R/dx: {:.2}",
+            fitted_exponent(&pts).unwrap_or(f64::NAN)
+        );
+    }
+}
+
 fn main() {
     // no plots: criterion's plotting backend needs a system font
     let mut c = Criterion::default().without_plots().configure_from_args();
     bench(&mut c);
     scaling(&mut c);
     striker_green(&mut c);
+    cylinder(&mut c);
     c.final_summary();
 }
