@@ -5,7 +5,8 @@ its error estimate:
 
 - :mod:`dyncontact.wedge`: the self-similar indentation by a rigid wedge with friction and
   displacement coupling (``solve``, ``stress``, ``field``, ``curve``);
-- :mod:`dyncontact.impact`: the transient impact of rigid, elastic and thin-shell strikers
+- :mod:`dyncontact.impact`: the transient impact of rigid, elastic (local model, full
+  cylinder) and thin-shell strikers
   (``run``, ``edge``, ``striker_green``), and :mod:`dyncontact.lamb`: Lamb's surface influence functions
   (``green``).
 

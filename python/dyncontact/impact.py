@@ -1,10 +1,12 @@
-"""The transient impact of rigid, elastic and thin-shell strikers on an elastic half-plane
-(plane strain, the impact paper): the ``impact`` command line as Python calls.
+"""The transient impact of rigid, elastic (local model, full cylinder) and thin-shell strikers
+on an elastic half-plane (plane strain, the impact paper): the ``impact`` command line as
+Python calls.
 
 Conventions (as ``impact --help``): the half-plane's ``c1``, ``c2`` in m/s or its
 ``poisson``; lengths over the striker's scale R, times as c1 t/R, speeds over c1, the force
 over rho c1^2 R, energies over rho c1^2 R^2, pressures over rho c1^2. ``striker``:
-``"rigid"``, ``"elastic:c1=..,c2=..,density_ratio=.."`` or
+``"rigid"``, ``"elastic:c1=..,c2=..,density_ratio=.."``,
+``"cylinder:c1=..,c2=..,density_ratio=.."`` (the full elastic cylinder, its mass its own) or
 ``"shell:thickness_over_R=..,c1=..,c2=..,density_ratio=.."``; ``profile``:
 ``"circle:R=.."``, ``"parabola:R=.."``, ``"power:A=..,k=.."``, ``"wedge:theta_deg=.."``,
 ``"flat:a=.."`` or ``"table:FILE"``; ``law``: ``"signorini"`` or ``"kinematic"``.

@@ -111,6 +111,21 @@ def test_impact_run_at_30_digits_agrees_with_the_cli(cli):
     assert r.h_over_R.dtype == object and isinstance(r.h_over_R[-1], Decimal)
 
 
+def test_impact_run_with_the_cylinder_striker_agrees_with_the_cli(cli):
+    # the striker's text passes through; the cylinder's mass is its own (no mass_ratio)
+    striker = "cylinder:c1=1870.83,c2=1000,density_ratio=1"
+    flags = ["--c1", "1870.83", "--c2", "1000", "--striker", striker, "--profile", "parabola:R=1",
+             "--v0-over-c1", "0.01", "--end", "c1t/R=0.5", "--dx", "0.02", "--levels", "2"]
+    expected = cli_json(cli("impact", "run", *flags, "--json"), False)
+    r = dyncontact.impact.run(c1=1870.83, c2=1000, striker=striker, profile="parabola:R=1",
+                              v0_over_c1=0.01, end=0.5, dx=0.02, levels=2)
+    same_bits(expected, r.to_dict())
+    assert expected["striker"] == "cylinder"
+    assert math.isclose(expected["mass_ratio"], math.pi, rel_tol=1e-15)
+    parts = r.striker_strain_energy_over_rho_c1sq_Rsq + r.striker_vibration_energy_over_rho_c1sq_Rsq
+    assert np.allclose(parts, r.striker_energy_over_rho_c1sq_Rsq, rtol=1e-9, atol=0.0)
+
+
 @pytest.mark.parametrize("law", ["signorini", "kinematic"])
 def test_impact_edge_agrees_with_the_cli(cli, law):
     expected = cli_json(cli("impact", "edge", "--poisson", "0.25", "--speed-over-c1", "0.3,0.55,0.7,1.4", "--law", law, "--json"), False)
