@@ -14,6 +14,8 @@ use crate::profile::Profile;
 use crate::run::Run;
 use crate::scalar::Scalar;
 use crate::solved::SolvedImpact;
+use crate::solved::CYLINDER_MODES_BELOW;
+use crate::striker::disk::Disk;
 use crate::striker::Striker;
 use crate::tables::Tables;
 
@@ -132,6 +134,13 @@ impl ImpactCase {
                 "rigid: above f64 precision only the rigid striker is solved (the elastic and shell strikers' coefficients are f64)",
             ));
         }
+        // a cylinder's modes (for its energies) on another thread while the march goes on
+        let modes_job = match self.striker {
+            Striker::Cylinder(mat) => Some(std::thread::spawn(move || {
+                Disk::new(mat.poisson()).and_then(|d| d.modes(CYLINDER_MODES_BELOW))
+            })),
+            _ => None,
+        };
         if extended && !self.profile.exact_at_every_precision() {
             return Err(invalid(
                 "profile",
@@ -329,12 +338,21 @@ impl ImpactCase {
                 .and_then(|r| r.steps.last())
                 .map_or(0.0, |s| s.t.to_f64()),
         });
+        let disk_modes = modes_job.map(|job| {
+            job.join().unwrap_or_else(|_| {
+                Err(ImpactError::Step {
+                    time: "0".into(),
+                    reason: "the cylinder's modes could not be computed".into(),
+                })
+            })
+        });
         Ok(SolvedImpact {
             case: self.clone(),
             m,
             s_r,
             mass: self.drive.mass(m),
             runs,
+            disk_modes,
         })
     }
 }

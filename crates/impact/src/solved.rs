@@ -10,7 +10,6 @@ use crate::march::EdgeLaw;
 use crate::run::Run;
 use crate::scalar::Scalar;
 use crate::striker::cylinder::DiskModes;
-use crate::striker::disk::Disk;
 use crate::striker::{shell_energies, Ring, Striker};
 
 /// The safety factor on the grids' differences in every error estimate of a history and a
@@ -155,6 +154,9 @@ pub struct SolvedImpact<T = f64> {
     pub(crate) mass: Option<T>,
     /// The runs, finest first.
     pub runs: Vec<Run<T>>,
+    /// A cylinder striker's free modes below [`CYLINDER_MODES_BELOW`] (computed beside the
+    /// march), `None` for the other strikers.
+    pub(crate) disk_modes: Option<Result<DiskModes>>,
 }
 
 fn order(fine: &[f64], mid: &[f64], coarse: &[f64]) -> Option<f64> {
@@ -553,9 +555,11 @@ pub struct StrikerEnergyStep {
 }
 
 /// The highest frequency (units c2s/R) of the free disk's modes that carry a cylinder
-/// striker's vibration energy: the kinetic energy converges like about 1/omega_max (its
-/// change per doubling falls by 2.3 to 2.8 on the reference case, about 1e-3 of it at 64).
-pub const CYLINDER_MODES_BELOW: f64 = 32.0;
+/// striker's vibration energy: the kinetic energy converges like about 1/omega_max (its change
+/// per doubling falls by 2.3 to 2.8 on the reference case; 0.8 percent of it from 16 to 32,
+/// `docs/strikers.md` section 8), and the report adds twice the change from the modes below
+/// half this frequency to its estimate.
+pub const CYLINDER_MODES_BELOW: f64 = 24.0;
 
 impl SolvedImpact<f64> {
     /// A deformable striker's strain and vibration kinetic energy over rho c1^2 R^2 after
@@ -577,10 +581,7 @@ impl SolvedImpact<f64> {
     /// The free disk's modes of a cylinder striker ([`CYLINDER_MODES_BELOW`]), once for
     /// every level; `None` for the other strikers.
     fn cylinder_modes(&self) -> Option<Result<DiskModes>> {
-        let Striker::Cylinder(mat) = &self.case.striker else {
-            return None;
-        };
-        Some(Disk::new(mat.poisson()).and_then(|d| d.modes(CYLINDER_MODES_BELOW)))
+        self.disk_modes.clone()
     }
 
     fn run_striker_energies(

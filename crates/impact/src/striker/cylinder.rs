@@ -21,8 +21,8 @@ use crate::error::{invalid, Result};
 
 /// The first width of the table (offsets): each growth repeats the frequency samples, whose
 /// cost is most of a table's, so the first width serves a history 64 cells wide (2 x 64 + 1
-/// columns and the margin).
-const FIRST_WIDTH: usize = 137;
+/// columns).
+const FIRST_WIDTH: usize = 129;
 
 /// The offsets added beyond a request.
 const GROWTH_MARGIN: usize = 8;

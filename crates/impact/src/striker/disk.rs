@@ -33,6 +33,12 @@ pub const SMALLEST_S: f64 = 1e-4;
 /// The most terms of the Bessel ratio's continued fraction (it needs about |s| R/c2s).
 const CF_TERMS: u32 = 1_000_000;
 
+/// No natural frequency of order n lies below LOWEST_OVER_N n (units c2s/R): the lowest,
+/// flexural, ones of the low orders are near 0.65 n, the high orders' near n c_R >= 0.87 n
+/// (checked for Poisson's ratios from -0.9 to 0.49 and n <= 40 against a scan from 0 in the
+/// tests). The scans start there, where J_n of the low frequencies would underflow.
+const LOWEST_OVER_N: f64 = 0.5;
+
 /// The largest circumferential order served.
 pub const LARGEST_ORDER: u32 = 100_000;
 
@@ -112,7 +118,7 @@ impl Disk {
         if n > 1000 {
             return Err(invalid("n", n, "0..=1000"));
         }
-        let out = self.scan(n, 1e4, count)?;
+        let out = self.scan(n, LOWEST_OVER_N * f64::from(n), 1e4, count)?;
         if out.len() < count {
             return Err(ImpactError::Step {
                 time: "omega = 1e4".into(),
@@ -135,7 +141,7 @@ impl Disk {
             return Err(invalid("omega_max", omega_max, "(0, 1e4]"));
         }
         let h = 1e-6;
-        self.scan(n, omega_max, usize::MAX)?
+        self.scan(n, LOWEST_OVER_N * f64::from(n), omega_max, usize::MAX)?
             .into_iter()
             .map(|omega| {
                 let side = |w: f64| -> Result<f64> {
@@ -154,16 +160,15 @@ impl Disk {
             .collect()
     }
 
-    /// The zeros of [`Disk::frequency_function`] of order n in (n/4, omega_max], at most
-    /// `count` of them: bracketed on a grid of 1/200 of the shear wavelength's scale and refined by
-    /// `complexfn::roots::illinois` to the rounding of omega.
-    fn scan(&self, n: u32, omega_max: f64, count: usize) -> Result<Vec<f64>> {
+    /// The zeros of [`Disk::frequency_function`] of order n in (`from`, omega_max], at most
+    /// `count` of them: bracketed on a grid of 1/200 of the shear wavelength's scale and
+    /// refined by `complexfn::roots::illinois` to the rounding of omega.
+    fn scan(&self, n: u32, from: f64, omega_max: f64, count: usize) -> Result<Vec<f64>> {
         let step = 0.005;
         let f = |omega: &f64| Ok::<f64, ImpactError>(self.frequency_function(n, *omega));
         let mut out = Vec::new();
-        // no frequency of order n lies below n/4 (the lowest, flexural, ones of the low
-        // orders are near 0.7 n, the high orders' near n c_R), where J_n underflows
-        let mut lo = (0.25 * f64::from(n)).max(1e-3);
+        // below `from` J_n may underflow: start where the function is not 0
+        let mut lo = from.max(1e-3);
         let mut flo = self.frequency_function(n, lo);
         while flo == 0.0 && lo < omega_max {
             lo += step;
@@ -327,6 +332,25 @@ fn bessel_j(n: u32, x: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The scans' start: no frequency of order n below LOWEST_OVER_N n, by a scan from 0
+    /// (where J_n does not underflow: 1 <= n <= 40).
+    #[test]
+    fn no_frequency_below_the_scans_start() {
+        for nu in [-0.9, -0.5, 0.0, 0.25, 0.45, 0.49] {
+            let disk = Disk::new(nu).unwrap();
+            for n in 1..=40u32 {
+                let top = LOWEST_OVER_N * f64::from(n) + 0.5;
+                let found = disk.scan(n, 1e-3, top, 1).unwrap();
+                if let Some(w) = found.first() {
+                    assert!(
+                        *w > LOWEST_OVER_N * f64::from(n),
+                        "nu {nu}, n {n}: a frequency at {w}"
+                    );
+                }
+            }
+        }
+    }
 
     /// J_0, J_1, J_5 at a few points against their tabulated values (Abramowitz and Stegun,
     /// table 9.1).

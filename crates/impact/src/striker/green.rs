@@ -26,7 +26,7 @@
 
 use std::f64::consts::PI;
 
-use lamb::HalfPlane;
+use lamb::{Estimate, HalfPlane};
 use rayon::prelude::*;
 use rustfft::num_complex::Complex64;
 
@@ -279,8 +279,10 @@ impl Disk {
                     partial[3],
                     few_harmonics,
                 ];
+                // the periodised half-plane, in its own units (c1 = 1: time c1s t)
+                let images = periodised_half_plane(&hp, theta0, angle, c1 * t)?;
                 let (deformation, error) =
-                    inv.deformation(&series, round, t, theta0, angle, c1, &hp)?;
+                    inv.deformation(&series, round, t, theta0, angle, c1, images)?;
                 let translation = translation_weight * (angle).cos() * 0.5 * t * t;
                 let total = deformation + translation;
                 row_total.push(total);
@@ -361,7 +363,8 @@ impl Inversion {
     /// bound, from the remainder's series `series` at t (without the factor
     /// e^(sigma t)/T): over all frequencies, up to the four marks 1/2, 5/8, 3/4, 7/8 of
     /// them, and over three quarters of the harmonics; `round` the series' rounding bound.
-    /// The periodised half-plane and the uniform mode are added here.
+    /// The periodised half-plane `images` (value, error bound) and the uniform mode are
+    /// added here.
     #[allow(clippy::too_many_arguments)]
     fn deformation(
         &self,
@@ -371,7 +374,7 @@ impl Inversion {
         theta0: f64,
         angle: f64,
         c1: f64,
-        hp: &HalfPlane<f64>,
+        images: (f64, f64),
     ) -> Result<(f64, f64)> {
         let scale = (self.sigma * t).exp() / self.period_half;
         let all = series[0];
@@ -387,8 +390,7 @@ impl Inversion {
                 .fold(0.0, f64::max);
         let err_harmonics = scale * (all - series[5]).abs();
         let err_alias = (-2.0 * SIGMA_T).exp() * 10.0 * remainder.abs().max(theta0);
-        // the periodised half-plane, in its own units (c1 = 1: time c1s t)
-        let (images, err_images) = periodised_half_plane(hp, theta0, angle, c1 * t)?;
+        let (images, err_images) = images;
         let value = images + remainder - theta0 / PI * t / c1;
         let error = err_frequencies + err_harmonics + scale * round + err_alias + err_images;
         if !(value.is_finite() && error.is_finite()) {
@@ -531,6 +533,47 @@ fn periodised_half_plane(
         error += e;
     }
     Ok((value, error))
+}
+
+/// [`periodised_half_plane`] for the arcs of width `dx` centred at k dx for every k in
+/// `offsets` (theta0 = dx/2), at `time` (c1 = 1): the second differences of one row of
+/// primitives Xi(j dx + 2 pi m) per image, shared by neighbouring offsets (an image whose
+/// every offset lies beyond the P front is skipped; Xi is even). Returns (value, error) per
+/// offset.
+fn periodised_row(
+    hp: &HalfPlane<f64>,
+    dx: f64,
+    offsets: std::ops::Range<usize>,
+    time: f64,
+) -> Result<Vec<(f64, f64)>> {
+    let reach = time + dx;
+    let mut out = vec![(0.0, 0.0); offsets.len()];
+    let far = (offsets.end as f64 * dx + reach + PI) / (2.0 * PI);
+    let mmax = far.ceil() as i64;
+    // the row's first index: the primitives at (k - 1) dx .. (k + 1) dx
+    let first = offsets.start as i64 - 1;
+    for m in -mmax..=mmax {
+        let shift = 2.0 * PI * m as f64;
+        let near = |k: usize| (k as f64 * dx + shift).abs() < reach;
+        if !offsets.clone().any(near) {
+            continue;
+        }
+        let row: Vec<Estimate<f64>> = (first..=offsets.end as i64)
+            .map(|j| {
+                let x = (j as f64 * dx + shift).abs();
+                hp.cell_mean_primitive_zz(&x, &time)
+            })
+            .collect::<std::result::Result<_, _>>()?;
+        for (i, k) in offsets.clone().enumerate() {
+            if !near(k) {
+                continue;
+            }
+            let (a, b, c) = (&row[i], &row[i + 1], &row[i + 2]);
+            out[i].0 += (a.value - 2.0 * b.value + c.value) / dx;
+            out[i].1 += (a.error + 2.0 * b.error + c.error) / dx;
+        }
+    }
+    Ok(out)
 }
 
 /// The half-plane's mean displacement over the strip of half-width theta0 at the distance
@@ -690,15 +733,16 @@ impl Disk {
         let kmax = inv.kmax;
         let marks = [kmax / 2, 5 * kmax / 8, 3 * kmax / 4, 7 * kmax / 8];
         let round = inv.rounding(&samples);
+        // the periodised half-plane at every step and offset, the primitives shared by
+        // neighbouring offsets, in parallel over the steps
+        let images: Vec<Vec<(f64, f64)>> = (1..=steps)
+            .into_par_iter()
+            .map(|l| periodised_row(&hp, dx, offsets.clone(), c1 * l as f64 * dt))
+            .collect::<Result<_>>()?;
         let (_, inverse) = crate::history::Planner::new().plans(m);
         let zero = Complex64::new(0.0, 0.0);
-        let mut out = LatticeStepResponse {
-            dx,
-            dt,
-            deformation: Vec::with_capacity(angles.len()),
-            error: Vec::with_capacity(angles.len()),
-        };
-        for (j, &angle) in angles.iter().enumerate() {
+        // each receiver's folded series and inverse transforms, in parallel over the receivers
+        let per_angle = |(j, &angle): (usize, &f64)| -> Result<(Vec<f64>, Vec<f64>)> {
             // folded series: all frequencies, the four partial sums, three quarters of the
             // harmonics
             let mut series = vec![vec![zero; m]; 6];
@@ -721,18 +765,28 @@ impl Disk {
             let mut err = Vec::with_capacity(steps + 1);
             row.push(0.0);
             err.push(0.0);
-            let columns: Vec<[f64; 6]> = (0..=steps)
-                .map(|l| std::array::from_fn(|i| series[i][l].re))
-                .collect();
-            for (l, at) in columns.iter().enumerate().skip(1) {
+            for l in 1..=steps {
+                let at: [f64; 6] = std::array::from_fn(|i| series[i][l].re);
                 let t = l as f64 * dt;
-                let (value, e) = inv.deformation(at, round, t, theta0, angle, c1, &hp)?;
+                let (value, e) =
+                    inv.deformation(&at, round, t, theta0, angle, c1, images[l - 1][j])?;
                 row.push(value);
                 err.push(e);
             }
-            out.deformation.push(row);
-            out.error.push(err);
-        }
+            Ok((row, err))
+        };
+        let rows: Vec<(Vec<f64>, Vec<f64>)> = angles
+            .par_iter()
+            .enumerate()
+            .map(per_angle)
+            .collect::<Result<_>>()?;
+        let (deformation, error) = rows.into_iter().unzip();
+        let out = LatticeStepResponse {
+            dx,
+            dt,
+            deformation,
+            error,
+        };
         Ok(out)
     }
 }
