@@ -107,29 +107,15 @@ fn scaling(c: &mut Criterion) {
             .max()
             .unwrap_or(0);
         let cells = (run.steps.len() * nx) as f64;
-        // each sample's time per solve
-        let times = RefCell::new(Vec::new());
-        g.bench_with_input(
+        let median = timed(
+            &mut g,
             BenchmarkId::new(
                 "rigid_reference",
                 format!("R_over_dx={r_over_dx}, levels=1"),
             ),
             &case,
-            |b, case| {
-                b.iter_custom(|iters| {
-                    let t0 = Instant::now();
-                    for _ in 0..iters {
-                        black_box(case.solve(|_| {}).unwrap());
-                    }
-                    let e = t0.elapsed();
-                    times.borrow_mut().push(e.as_secs_f64() / iters as f64);
-                    e
-                })
-            },
         );
-        let mut t = times.into_inner();
-        t.sort_by(f64::total_cmp);
-        if let Some(&median) = t.get(t.len() / 2) {
+        if let Some(median) = median {
             rows.push((r_over_dx, run.steps.len(), nx, cells, median));
         }
     }
@@ -173,7 +159,7 @@ fn striker_green(c: &mut Criterion) {
     g.finish();
 }
 
-/// The median time per call of `f` over criterion's samples, benched under `name`.
+/// The median time per solve of `case` over criterion's samples, benched under `name`.
 fn timed(
     g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     name: BenchmarkId,

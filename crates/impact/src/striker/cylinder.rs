@@ -31,6 +31,21 @@ const GROWTH_MARGIN: usize = 8;
 /// table grows by doubling (each growth repeats the whole table, so at most twice the work).
 const MAX_FIRST_ROWS: usize = 2048;
 
+/// The refusal of an end time c1 t/R = `end` past the disk's served response, for c2s/c1 =
+/// `c2_ratio`.
+fn past_served(end: f64, c2_ratio: f64) -> crate::error::ImpactError {
+    invalid(
+        "end time c1 t/R",
+        end,
+        format!(
+            "(0, {:.6}]: the cylinder's own response is served to c2s t/R = {} (c2s/c1 = {:.6})",
+            super::green::LATEST_TIME / c2_ratio,
+            super::green::LATEST_TIME,
+            c2_ratio
+        ),
+    )
+}
+
 /// The cylinder's coefficients c(k, l) (unscaled: without mu/mu_s), grown by columns.
 pub(crate) struct CylinderTable {
     disk: Disk,
@@ -65,17 +80,7 @@ impl CylinderTable {
         // the last row served: the response's latest time
         let last_row = (super::green::LATEST_TIME / dt_disk).floor() as usize - 1;
         if horizon > last_row && horizon <= MAX_FIRST_ROWS {
-            return Err(invalid(
-                "end time c1 t/R",
-                horizon as f64 * dt,
-                format!(
-                    "(0, {:.6}]: the cylinder's own response is served to c2s t/R = {} \
-                     (c2s/c1 = {:.6})",
-                    super::green::LATEST_TIME / material.c2_ratio,
-                    super::green::LATEST_TIME,
-                    material.c2_ratio
-                ),
-            ));
+            return Err(past_served(horizon as f64 * dt, material.c2_ratio));
         }
         Ok(CylinderTable {
             disk,
@@ -101,16 +106,9 @@ impl CylinderTable {
         let have_k = self.c.first().map_or(0, Vec::len);
         if lmax >= self.rows {
             if lmax > self.last_row {
-                return Err(invalid(
-                    "end time c1 t/R",
+                return Err(past_served(
                     (lmax + 1) as f64 * self.dt_march,
-                    format!(
-                        "(0, {:.6}]: the cylinder's own response is served to c2s t/R = {} \
-                         (c2s/c1 = {:.6})",
-                        super::green::LATEST_TIME / self.c2_ratio,
-                        super::green::LATEST_TIME,
-                        self.c2_ratio
-                    ),
+                    self.c2_ratio,
                 ));
             }
             self.rows = (lmax + 1).max(2 * self.rows).min(self.last_row + 1);

@@ -82,16 +82,16 @@ impl LatticeAccuracy {
         period_over_t: PERIOD_OVER_T,
     };
 
-    /// The march's: an eighth of the frequencies, half the harmonics per frequency and half
-    /// the period (the latest time's errors amplified by e^(sigma T/2) = 90 rather than 9.5),
-    /// for a hundred-and-twenty-eighth of the work. Measured on the reference case at R/200
+    /// The march's: a tenth of the frequencies, half the harmonics per frequency and half the
+    /// period (the latest time's errors amplified by e^(sigma T/2) = 90 rather than 9.5), for
+    /// a four-hundredth of the work. Measured on the reference case at R/200
     /// (`docs/strikers.md`, section 8): the coefficients' error about 2e-3 of the largest, at
     /// the fronts of the waves reflected from the far side, where the truncated series rings;
-    /// the march's force, penetration and half-width within 2.4e-6, 2.6e-7 and 8e-6 of their
+    /// the march's force, penetration and half-width within 9.5e-6, 1.3e-6 and 9.4e-6 of their
     /// peaks of the same march with a quarter of the frequencies and the full harmonics and
     /// period.
     pub(crate) const MARCH: LatticeAccuracy = LatticeAccuracy {
-        refine: 0.125,
+        refine: 0.1,
         harmonics_per_omega: 0.4,
         period_over_t: 2.0,
     };
