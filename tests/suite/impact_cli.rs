@@ -648,6 +648,15 @@ fn run_deformable_strikers() {
             ],
             "end time",
         ),
+        (
+            vec![
+                "--striker",
+                "cylinder:c1=1414.2135623730951,c2=1000,density_ratio=1",
+                "--end",
+                "c1t/R=1",
+            ],
+            "striker's Poisson's ratio 0",
+        ),
     ] {
         let mut args = base.to_vec();
         args.extend(extra);

@@ -64,6 +64,24 @@ impl StrikerMaterial {
         Ok(())
     }
 
+    /// The striker's own half-plane (Lamb crate, its c1 = 1): refused, naming the striker's
+    /// c2, at the one Poisson's ratio the Lamb crate excludes (0, c2s/c1s = 1/sqrt 2).
+    fn half_plane(&self) -> Result<HalfPlane<f64>> {
+        HalfPlane::new(self.c2_ratio / self.c1_ratio).map_err(|_| {
+            invalid(
+                "striker c2 over the half-plane's c1",
+                self.c2_ratio,
+                format!(
+                    "(0, {:.6}) but not {:.6} (the striker's Poisson's ratio 0, c2s/c1s = \
+                     1/sqrt 2, where a root of the Rayleigh cubic lies on the P front: move c2 \
+                     by a part in a million)",
+                    self.c1_ratio * 0.75f64.sqrt(),
+                    self.c1_ratio * 0.5f64.sqrt()
+                ),
+            )
+        })
+    }
+
     /// The striker's Poisson's ratio.
     pub fn poisson(&self) -> f64 {
         lamb::poisson_of(&(self.c2_ratio / self.c1_ratio).powi(2))
@@ -178,7 +196,7 @@ impl Striker {
         Ok(match self {
             Striker::Rigid => None,
             Striker::Elastic(mat) => {
-                let hp = HalfPlane::new(mat.c2_ratio / mat.c1_ratio)?;
+                let hp = mat.half_plane()?;
                 Some(Compliance::Elastic {
                     tables: Box::new(Tables::new(hp, kappa * mat.c1_ratio)?),
                     scale: 1.0 / mat.shear_modulus_ratio(m),
@@ -213,7 +231,7 @@ fn cylinder_compliance(
 ) -> Result<Compliance> {
     let scale = 1.0 / mat.shear_modulus_ratio(m);
     let quasi_static = disk::Disk::new(mat.poisson())?.inertia_relief_compliance(dx)?;
-    let hp = HalfPlane::new(mat.c2_ratio / mat.c1_ratio)?;
+    let hp = mat.half_plane()?;
     // the local response's size at the horizon (the striker's units: c1s = 1, mu_s = 1)
     let t_end = (horizon.max(1) as f64 * kappa * dx) * mat.c1_ratio;
     let (local, local_err) = green::half_plane_strip(&hp, 0.5 * dx, 0.0, t_end)?;
