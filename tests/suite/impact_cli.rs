@@ -687,6 +687,32 @@ fn run_deformable_strikers() {
         err.contains("profile") && err.contains("circle:R=1"),
         "{err}"
     );
+    // a cell narrower than the disk's response serves, named as the march's cell width
+    let (code, _, err) = impact(&[
+        "run",
+        "--c1",
+        "1870.83",
+        "--c2",
+        "1000",
+        "--striker",
+        "cylinder:c1=5900,c2=3200,density_ratio=3",
+        "--profile",
+        "parabola:R=1",
+        "--v0-over-c1",
+        "0.01",
+        "--dx",
+        "0.001",
+        "--levels",
+        "1",
+        "--end",
+        "c1t/R=0.05",
+    ]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains("cell width dx/R") && err.contains("cylinder"),
+        "{err}"
+    );
     let (code, _, err) = impact(&[
         "run",
         "--poisson",

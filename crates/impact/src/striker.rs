@@ -229,6 +229,7 @@ fn cylinder_compliance(
     kappa: f64,
     horizon: usize,
 ) -> Result<Compliance> {
+    cylinder::check_cell(dx)?;
     let scale = 1.0 / mat.shear_modulus_ratio(m);
     let quasi_static = disk::Disk::new(mat.poisson())?.inertia_relief_compliance(dx)?;
     let hp = mat.half_plane()?;

@@ -17,7 +17,7 @@
 use super::disk::Disk;
 use super::green::LatticeAccuracy;
 use super::StrikerMaterial;
-use crate::error::{invalid, Result};
+use crate::error::{invalid, ImpactError, Result};
 
 /// The first width of the table (offsets): each growth repeats the frequency samples, whose
 /// cost is most of a table's, so the first width serves a history 64 cells wide (2 x 64 + 1
@@ -31,9 +31,26 @@ const GROWTH_MARGIN: usize = 8;
 /// table grows by doubling (each growth repeats the whole table, so at most twice the work).
 const MAX_FIRST_ROWS: usize = 2048;
 
+/// Refuses a cell narrower than the disk's response serves ([`super::green::ARC_RANGE`]),
+/// naming the march's cell width.
+pub(crate) fn check_cell(dx: f64) -> Result<()> {
+    if dx < super::green::ARC_RANGE.0 {
+        return Err(invalid(
+            "cell width dx/R",
+            dx,
+            format!(
+                "[{}, ...) for a cylinder striker (its own response is served for arcs of at \
+                 least that width)",
+                super::green::ARC_RANGE.0
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The refusal of an end time c1 t/R = `end` past the disk's served response, for c2s/c1 =
 /// `c2_ratio`.
-fn past_served(end: f64, c2_ratio: f64) -> crate::error::ImpactError {
+fn past_served(end: f64, c2_ratio: f64) -> ImpactError {
     invalid(
         "end time c1 t/R",
         end,
@@ -75,6 +92,7 @@ impl CylinderTable {
         dt: f64,
         horizon: usize,
     ) -> Result<Self> {
+        check_cell(dx)?;
         let disk = Disk::new(material.poisson())?;
         let dt_disk = dt * material.c2_ratio;
         // the last row served: the response's latest time
@@ -125,13 +143,28 @@ impl CylinderTable {
         } else {
             (kmax + 1).max(2 * have_k) + GROWTH_MARGIN
         };
-        let lattice = self.disk.lattice_rows(
-            self.dx,
-            self.dt,
-            have_k..width,
-            self.rows,
-            LatticeAccuracy::MARCH,
-        )?;
+        let dx = self.dx;
+        let lattice = self
+            .disk
+            .lattice_rows(
+                dx,
+                self.dt,
+                have_k..width,
+                self.rows,
+                LatticeAccuracy::MARCH,
+            )
+            .map_err(|e| match e {
+                // the response's work limit, said of the march's input
+                ImpactError::InvalidParameter(p) if p.name == "arc over R" => invalid(
+                    "cell width dx/R",
+                    dx,
+                    format!(
+                        "a cylinder striker's response within its work limit: {}",
+                        p.range
+                    ),
+                ),
+                other => other,
+            })?;
         if self.c.is_empty() {
             self.c = vec![Vec::with_capacity(width); self.rows];
         }
