@@ -571,17 +571,20 @@ impl SolvedImpact<f64> {
     /// twice the change from the modes below half that frequency (`docs/strikers.md`, section
     /// 8). `None` for the other strikers.
     pub fn striker_energies(&self) -> Option<Result<Vec<StrikerEnergyStep>>> {
-        let modes = match self.cylinder_modes().transpose() {
+        let modes = match self.cylinder_modes() {
             Ok(m) => m,
             Err(e) => return Some(Err(e)),
         };
-        self.run_striker_energies(&self.runs[0], modes.as_ref())
+        self.run_striker_energies(&self.runs[0], modes)
     }
 
     /// The free disk's modes of a cylinder striker ([`CYLINDER_MODES_BELOW`]), once for
     /// every level; `None` for the other strikers.
-    fn cylinder_modes(&self) -> Option<Result<DiskModes>> {
-        self.disk_modes.clone()
+    fn cylinder_modes(&self) -> Result<Option<&DiskModes>> {
+        self.disk_modes
+            .as_ref()
+            .map(|r| r.as_ref().map_err(Clone::clone))
+            .transpose()
     }
 
     fn run_striker_energies(
@@ -653,18 +656,18 @@ impl SolvedImpact<f64> {
         &self,
         rows: &[HistoryRow],
     ) -> Option<Result<Vec<(Value, Value)>>> {
-        let modes = match self.cylinder_modes().transpose() {
+        let modes = match self.cylinder_modes() {
             Ok(m) => m,
             Err(e) => return Some(Err(e)),
         };
-        let fine = match self.run_striker_energies(&self.runs[0], modes.as_ref())? {
+        let fine = match self.run_striker_energies(&self.runs[0], modes)? {
             Ok(v) => v,
             Err(e) => return Some(Err(e)),
         };
         let coarse = match self
             .runs
             .get(1)
-            .map(|r| self.run_striker_energies(r, modes.as_ref()))
+            .map(|r| self.run_striker_energies(r, modes))
         {
             Some(Some(Ok(v))) => Some(v),
             Some(Some(Err(e))) => return Some(Err(e)),

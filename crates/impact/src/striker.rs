@@ -688,6 +688,13 @@ impl ShellTable {
     }
 }
 
+/// One step of the oscillator y'' + w^2 (y - ye) = 0 (its equilibrium ye constant over the
+/// step) from (y, y'), exactly, with c = cos(w dt) and s = sin(w dt): the modal recursion
+/// of the shell's and the cylinder's energies.
+pub(crate) fn oscillator_step(y: f64, v: f64, ye: f64, w: f64, c: f64, s: f64) -> (f64, f64) {
+    (ye + (y - ye) * c + v / w * s, -(y - ye) * w * s + v * c)
+}
+
 /// The shell's strain and vibration kinetic energy after each step of a pressure history,
 /// by an exact modal recursion (each mode a harmonic oscillator under a force constant over
 /// the step), independent of the coefficient tables: `pressures[n][j]` is the pressure on
@@ -723,9 +730,7 @@ pub fn shell_energies(
                 // matters, so carry the coordinate scaled by phi_W: f = -phi_W^2 force
                 let f = -phi2 * force;
                 let (c, s) = ((w * dt).cos(), (w * dt).sin());
-                let qe = f / (w * w);
-                let q1 = qe + (*q - qe) * c + *v / w * s;
-                let v1 = -(*q - qe) * w * s + *v * c;
+                let (q1, v1) = oscillator_step(*q, *v, f / (w * w), *w, c, s);
                 *q = q1;
                 *v = v1;
                 // energies of the true coordinate (scaled by 1/phi_W^2 in squares)

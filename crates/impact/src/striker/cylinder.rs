@@ -74,8 +74,7 @@ pub(crate) struct CylinderTable {
     rows: usize,
     /// The last row the response's latest time allows.
     last_row: usize,
-    /// The march's step (c1 t/R) and c2s/c1, for the messages.
-    dt_march: f64,
+    /// c2s/c1 (the march's step is dt over it), for the messages.
     c2_ratio: f64,
     /// c[l][k].
     c: Vec<Vec<f64>>,
@@ -96,8 +95,8 @@ impl CylinderTable {
         let disk = Disk::new(material.poisson())?;
         let dt_disk = dt * material.c2_ratio;
         // the last row served: the response's latest time
-        let last_row = (super::green::LATEST_TIME / dt_disk).floor() as usize - 1;
-        if horizon > last_row && horizon <= MAX_FIRST_ROWS {
+        let last_row = ((super::green::LATEST_TIME / dt_disk).floor() as usize).saturating_sub(1);
+        if last_row == 0 || (horizon > last_row && horizon <= MAX_FIRST_ROWS) {
             return Err(past_served(horizon as f64 * dt, material.c2_ratio));
         }
         Ok(CylinderTable {
@@ -106,7 +105,6 @@ impl CylinderTable {
             dt: dt_disk,
             rows: horizon.clamp(1, MAX_FIRST_ROWS.min(last_row)),
             last_row,
-            dt_march: dt,
             c2_ratio: material.c2_ratio,
             c: Vec::new(),
             err: 0.0,
@@ -125,7 +123,7 @@ impl CylinderTable {
         if lmax >= self.rows {
             if lmax > self.last_row {
                 return Err(past_served(
-                    (lmax + 1) as f64 * self.dt_march,
+                    (lmax + 1) as f64 * self.dt / self.c2_ratio,
                     self.c2_ratio,
                 ));
             }
@@ -298,9 +296,7 @@ impl DiskModes {
                 let c_n = o.c_n;
                 let force: f64 = p.iter().zip(&o.weights).map(|(a, b)| a * b).sum();
                 for (&(c, s, w, r), (y, v)) in o.modes.iter().zip(st.iter_mut()) {
-                    let ye = r * force / (w * w);
-                    let y1 = ye + (*y - ye) * c + *v / w * s;
-                    let v1 = -(*y - ye) * w * s + *v * c;
+                    let (y1, v1) = super::oscillator_step(*y, *v, r * force / (w * w), w, c, s);
                     *y = y1;
                     *v = v1;
                     kinetic += 0.5 * c_n * v1 * v1 / r;
