@@ -17,7 +17,9 @@ use rug::Float;
 
 use crate::error::{Error, InputError};
 use crate::input::impact as spec;
+use crate::report::axisym::AxiReport;
 use crate::report::impact::{EdgeReport, GreenReport, RunReport, StrikerGreenReport};
+use crate::report::Printed;
 
 /// The most digits a run gives: the march runs in double-double (about 32 digits) above
 /// f64.
@@ -68,6 +70,12 @@ pub struct RunInput {
     pub force: bool,
     /// The memory limit in GiB.
     pub memory_limit_gib: f64,
+    /// `plane` (plane strain, the default) or `axisymmetric` (a body of revolution on the
+    /// half-space, `docs/axisymmetric.md`).
+    pub geometry: String,
+    /// dr/R of the finest grid of an axisymmetric run (`None`: about 30 rings across the
+    /// largest contact radius expected).
+    pub dr: Option<f64>,
 }
 
 impl Default for RunInput {
@@ -95,6 +103,8 @@ impl Default for RunInput {
             digits: None,
             force: false,
             memory_limit_gib: impact::cost::DEFAULT_MEMORY_LIMIT_GIB,
+            geometry: "plane".into(),
+            dr: None,
         }
     }
 }
@@ -201,6 +211,150 @@ impl RunInput {
     }
 }
 
+impl RunInput {
+    /// Whether the run is axisymmetric (`geometry` = `axisymmetric`); an error for a
+    /// geometry other than `plane` and `axisymmetric`.
+    pub fn axisymmetric(&self) -> R<bool> {
+        match self.geometry.as_str() {
+            "plane" => Ok(false),
+            "axisymmetric" => Ok(true),
+            other => Err(InputError::new(
+                "geometry",
+                format!("invalid --geometry {other:?}: plane or axisymmetric"),
+            )
+            .into()),
+        }
+    }
+
+    /// The axisymmetric case these inputs describe (`geometry` = `axisymmetric`): a rigid
+    /// striker, `mass_ratio` = m/(rho R^3); the plane runs' striker models, `--digits`
+    /// and `--edge-cell` refused with the reason.
+    pub fn axi_case(&self) -> R<impact::axisym::AxiCase> {
+        self.check_missing()?;
+        let nu = spec::poisson(self.c1, self.c2, self.poisson)?;
+        if self.striker != "rigid" {
+            return Err(InputError::new(
+                "striker",
+                format!(
+                    "invalid --striker {:?} with --geometry axisymmetric: only rigid strikers (the deformable ones are plane-strain models)",
+                    self.striker
+                ),
+            )
+            .into());
+        }
+        if self.digits.is_some() {
+            return Err(InputError::new(
+                "digits",
+                "invalid --digits with --geometry axisymmetric: the axisymmetric march runs in f64 (its ring coefficients are f64 quadratures)",
+            )
+            .into());
+        }
+        let profile = spec::axi_profile(&self.profile, self.length)?;
+        let law = impact_law(&self.law)?;
+        let (end, stop) = spec::end(&self.end)?;
+        let drive = spec::drive(
+            self.driven.as_deref(),
+            self.mass_ratio,
+            self.v0_over_c1,
+            &impact::Striker::Rigid,
+        )?;
+        if stop == Stop::AtSeparation && !matches!(drive, impact::Drive::Free { .. }) {
+            return Err(InputError::new(
+                "end",
+                "invalid --end separation: only a free striker separates (give --mass-ratio and --v0-over-c1, or an end time c1t/R=VALUE)",
+            )
+            .into());
+        }
+        let c = impact::axisym::AxiCase {
+            poisson: nu,
+            profile,
+            drive,
+            law,
+            end,
+            stop,
+            dr: self.dr,
+            kappa: self.kappa,
+            levels: self.levels,
+        };
+        c.validate()?;
+        Ok(c)
+    }
+}
+
+/// The report of either geometry's run ([`run_any`]).
+#[derive(Clone, Debug)]
+pub enum AnyRunReport {
+    /// A plane-strain run.
+    Plane(Box<RunReport>),
+    /// An axisymmetric run.
+    Axisymmetric(Box<AxiReport>),
+}
+
+impl Printed for AnyRunReport {
+    fn to_json(&self) -> serde_json::Value {
+        match self {
+            AnyRunReport::Plane(r) => r.to_json(),
+            AnyRunReport::Axisymmetric(r) => r.to_json(),
+        }
+    }
+    fn json_text(&self) -> String {
+        match self {
+            AnyRunReport::Plane(r) => Printed::json_text(r.as_ref()),
+            AnyRunReport::Axisymmetric(r) => Printed::json_text(r.as_ref()),
+        }
+    }
+    fn plain_text(&self, cmdline: &str) -> String {
+        match self {
+            AnyRunReport::Plane(r) => r.to_csv(cmdline),
+            AnyRunReport::Axisymmetric(r) => r.to_csv(cmdline),
+        }
+    }
+}
+
+/// Runs the impact of `input` in its geometry ([`run`] or [`run_axisymmetric`]).
+pub fn run_any(
+    input: &RunInput,
+    progress: impl FnMut(impact::Progress) -> ControlFlow<()>,
+) -> R<AnyRunReport> {
+    Ok(if input.axisymmetric()? {
+        AnyRunReport::Axisymmetric(Box::new(run_axisymmetric(input, progress)?))
+    } else {
+        AnyRunReport::Plane(Box::new(run(input, progress)?))
+    })
+}
+
+/// Runs the axisymmetric impact of `input` (`geometry` = `axisymmetric`) and reports it.
+pub fn run_axisymmetric(
+    input: &RunInput,
+    progress: impl FnMut(impact::Progress) -> ControlFlow<()>,
+) -> R<AxiReport> {
+    let c = input.axi_case()?;
+    let times = input.pressure_times()?;
+    for &t in &times {
+        if !(t > 0.0 && t <= c.end) {
+            return Err(InputError::new(
+                "pressure_at",
+                format!(
+                    "invalid --pressure-at time {t}: admissible range is (0, {}], the run's times",
+                    c.end
+                ),
+            )
+            .into());
+        }
+    }
+    let sol = c.solve(progress)?;
+    AxiReport::of(&sol, crate::VERSION, &times).map_err(|m| {
+        if m.starts_with("invalid --pressure-at") {
+            InputError::new("pressure_at", m).into()
+        } else {
+            Error::Impact(impact::ImpactError::Step {
+                time: "the report".into(),
+                reason: m,
+            })
+        }
+    })
+}
+
 /// Runs the impact of `input`, calling `progress` as the march goes on, and reports it.
 /// When `progress` answers [`ControlFlow::Break`] the march stops and the call ends with
 /// [`impact::ImpactError::Stopped`] (an interrupt).
@@ -213,6 +367,13 @@ pub fn run(
     input: &RunInput,
     progress: impl FnMut(impact::Progress) -> ControlFlow<()>,
 ) -> R<RunReport> {
+    if input.axisymmetric()? {
+        return Err(InputError::new(
+            "geometry",
+            "an axisymmetric run is reported by run_axisymmetric (or run_any)",
+        )
+        .into());
+    }
     let mut c = input.case()?;
     c.validate()?;
     if !(input.memory_limit_gib.is_finite() && input.memory_limit_gib > 0.0) {

@@ -273,7 +273,7 @@ fn impact_call(py: Python<'_>, argv: Vec<String>, progress: Option<Py<PyAny>>) -
         .map_err(|e| usage(py, "impact", &e))?;
     let done = supervised(py, progress, move |control| -> Result<String, Error> {
         Ok(match cli.command {
-            ImpactCommand::Run(a) => impact_api::run(&a.input()?, |p| {
+            ImpactCommand::Run(a) => impact_api::run_any(&a.input()?, |p| {
                 control.set_fraction(p.fraction);
                 control.go_on()
             })?

@@ -20,8 +20,10 @@ pub struct ImpactCli {
     pub command: Command,
 }
 
-/// The impact program's subcommands.
+/// The impact program's subcommands (parsed once per call: the run's flags make its
+/// variant the largest, which costs nothing worth a box).
 #[derive(Subcommand, Debug)]
+#[allow(clippy::large_enum_variant)]
 pub enum Command {
     /// Lamb's surface influence functions g(s), step responses W(s), cell integrals and the
     /// Rayleigh constants of the half-plane.
@@ -150,9 +152,18 @@ pub struct RunArgs {
     /// radius for the circle and the parabola).
     #[arg(long, allow_hyphen_values = true)]
     length: Option<f64>,
-    /// Cell width dx/R of the finest grid.
-    #[arg(long, default_value_t = 0.005, allow_hyphen_values = true)]
-    dx: f64,
+    /// Cell width dx/R of the finest grid of a plane run (default 0.005).
+    #[arg(long, allow_hyphen_values = true)]
+    dx: Option<f64>,
+    /// The geometry: `plane` (plane strain: cylinders, wedges, shells; the default) or
+    /// `axisymmetric` (a sphere, paraboloid, cone or flat punch on the elastic half-space;
+    /// --mass-ratio is then m/(rho R^3)).
+    #[arg(long, default_value = "plane")]
+    geometry: String,
+    /// Ring width dr/R of the finest grid of an axisymmetric run (default: about 30 rings
+    /// across the largest contact radius expected).
+    #[arg(long, allow_hyphen_values = true)]
+    dr: Option<f64>,
     /// kappa = c1 dt/dx, in [0.5, 64].
     #[arg(long, default_value_t = 2.0, allow_hyphen_values = true)]
     kappa: f64,
@@ -162,8 +173,8 @@ pub struct RunArgs {
     /// The edge cell: `model` (the local behaviour of the pressure at a moving edge, the
     /// edge inside its cell) or `whole` (whole cells, the edge captured cell by cell), for
     /// comparing the two.
-    #[arg(long, default_value = "model")]
-    edge_cell: String,
+    #[arg(long)]
+    edge_cell: Option<String>,
     /// Pressure profiles at these times: c1t/R=T1,T2,...
     #[arg(long)]
     pressure_at: Option<String>,
@@ -229,6 +240,25 @@ impl RunArgs {
     /// number refused, naming it).
     pub fn input(&self) -> Result<RunInput, InputError> {
         let (c1, c2, poisson) = self.material.numbers()?;
+        if self.geometry == "axisymmetric" {
+            if self.dx.is_some() {
+                return Err(InputError::new(
+                    "dx",
+                    "invalid --dx with --geometry axisymmetric: the rings' width is --dr",
+                ));
+            }
+            if self.edge_cell.is_some() {
+                return Err(InputError::new(
+                    "edge_cell",
+                    "invalid --edge-cell with --geometry axisymmetric: the rings are whole (the edge model is the plane march's)",
+                ));
+            }
+        } else if self.dr.is_some() {
+            return Err(InputError::new(
+                "dr",
+                "invalid --dr with --geometry plane: the cells' width is --dx",
+            ));
+        }
         Ok(RunInput {
             c1,
             c2,
@@ -241,14 +271,16 @@ impl RunArgs {
             law: self.law.clone(),
             end: self.end.clone().unwrap_or_default(),
             length: self.length,
-            dx: self.dx,
+            dx: self.dx.unwrap_or(0.005),
             kappa: self.kappa,
             levels: self.levels,
-            edge_cell: self.edge_cell.clone(),
+            edge_cell: self.edge_cell.clone().unwrap_or_else(|| "model".into()),
             pressure_at: self.pressure_at.clone(),
             digits: self.digits,
             force: self.force,
             memory_limit_gib: self.memory_limit_gib,
+            geometry: self.geometry.clone(),
+            dr: self.dr,
         })
     }
 }

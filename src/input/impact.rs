@@ -6,6 +6,7 @@
 // `!(x > a)` is used on purpose: it is true for NaN, so range checks reject NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+use impact::axisym::AxiProfile;
 use impact::{Drive, Profile, ShellStriker, Stop, Striker, StrikerMaterial};
 
 use crate::error::InputError;
@@ -159,6 +160,64 @@ pub fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
                 p,
                 format!(
                     "invalid --profile kind {other:?}: one of circle, parabola, power, wedge, flat, table"
+                ),
+            ))
+        }
+    })
+}
+
+/// The axisymmetric profile of `--profile` in `--geometry axisymmetric` runs:
+/// `sphere:R=..`, `paraboloid:R=..` (or `parabola:R=..`), `cone:theta_deg=..` (the half-angle
+/// at the apex), `flat:a=..` (a cylindrical punch of radius a), in units of R: the radius for
+/// the sphere and the paraboloid, `length` (m, default 1) for the punch.
+pub fn axi_profile(spec: &str, length: Option<f64>) -> R<AxiProfile> {
+    let p = "profile";
+    let (kind, rest) = spec.split_once(':').ok_or_else(|| {
+        InputError::new(
+            p,
+            format!("invalid --profile {spec:?}: write kind:parameters, e.g. sphere:R=1"),
+        )
+    })?;
+    let scale = length.unwrap_or(1.0);
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(InputError::new(
+            "length",
+            format!("invalid --length = {scale}: admissible range is (0, inf) m"),
+        ));
+    }
+    let pairs = kv(p, rest, "--profile")?;
+    Ok(match kind {
+        "sphere" | "paraboloid" | "parabola" => {
+            if length.is_some() {
+                return Err(InputError::new(
+                    "length",
+                    format!("contradictory flags: --length with --profile {kind} (R is the radius)"),
+                ));
+            }
+            let r = one(p, &pairs, "R", "--profile")?;
+            if !(r > 0.0) {
+                return Err(InputError::new(
+                    p,
+                    format!("invalid profile radius R = {r}: admissible range is (0, inf) m"),
+                ));
+            }
+            if kind == "sphere" {
+                AxiProfile::Sphere { radius: 1.0 }
+            } else {
+                AxiProfile::Paraboloid { radius: 1.0 }
+            }
+        }
+        "cone" => AxiProfile::Cone {
+            theta_deg: one(p, &pairs, "theta_deg", "--profile")?,
+        },
+        "flat" => AxiProfile::Flat {
+            radius: one(p, &pairs, "a", "--profile")? / scale,
+        },
+        other => {
+            return Err(InputError::new(
+                p,
+                format!(
+                    "invalid --profile kind {other:?} for --geometry axisymmetric: one of sphere, paraboloid, cone, flat"
                 ),
             ))
         }

@@ -13,6 +13,7 @@ use complexfn::Real;
 use rug::Float;
 use serde_json::{json, Number as JsonNumber, Value};
 
+pub mod axisym;
 pub mod impact;
 pub mod wedge;
 
@@ -62,6 +63,7 @@ printed!(wedge::SolveReport, one_line, table);
 printed!(wedge::StressReport, one_line, table);
 printed!(wedge::FieldReport, one_line, table);
 printed!(impact::RunReport, indented, csv);
+printed!(axisym::AxiReport, indented, csv);
 printed!(impact::GreenReport, indented, csv);
 printed!(impact::EdgeReport, indented, csv);
 printed!(impact::StrikerGreenReport, indented, csv);

@@ -11,6 +11,7 @@
 #![warn(missing_docs)]
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod axisym;
 pub mod case;
 pub mod cost;
 pub mod edge_fit;

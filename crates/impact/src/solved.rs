@@ -159,6 +159,65 @@ pub struct SolvedImpact<T = f64> {
     pub(crate) disk_modes: Option<Result<DiskModes>>,
 }
 
+/// The estimate of a quantity known on every level (finest first) as one number per level:
+/// the difference of the two finest levels (or half that of the next pair, if larger),
+/// extrapolated with the observed order where three levels show one above 1/2, times the
+/// safety factor of the histories; `None` with one level. Shared by the plane and the
+/// axisymmetric marches.
+pub(crate) fn level_estimate(values: &[f64]) -> Option<f64> {
+    if values.len() < 2 || values.iter().any(|v| !v.is_finite()) {
+        return None;
+    }
+    let d1 = (values[0] - values[1]).abs();
+    let d2 = values.get(2).map(|c| (values[1] - c).abs());
+    let factor = match d2 {
+        Some(d2) if d1 > 0.0 && d2 > 0.0 => {
+            let p = (d2 / d1).log2();
+            if p > 0.5 {
+                (1.0 / (2f64.powf(p) - 1.0)).max(1.0)
+            } else {
+                2.0
+            }
+        }
+        _ => 1.0,
+    };
+    Some(ESTIMATE_SAFETY * d1.max(0.5 * d2.unwrap_or(0.0)) * factor)
+}
+
+/// The estimates of a history known on every level at the same report times (finest first,
+/// `levels[q][i]`): at each time the largest of |Q_1 - Q_2| and |Q_2 - Q_4|/2 over the nine
+/// report times around it (the contact set moves ring by ring or cell by cell, so one
+/// difference may happen to be small), extrapolated with the history's observed order where
+/// it is positive, times the safety factor; with the observed order. `None` with one level.
+pub(crate) fn windowed_estimates(levels: &[Vec<f64>]) -> (Option<Vec<f64>>, Option<f64>) {
+    if levels.len() < 2 {
+        return (None, None);
+    }
+    let n = levels.iter().map(Vec::len).min().unwrap_or(0);
+    let ord = if levels.len() >= 3 {
+        order(&levels[0][..n], &levels[1][..n], &levels[2][..n])
+    } else {
+        None
+    };
+    let factor = ord
+        .filter(|p| *p > 0.0)
+        .map(|p| (1.0 / (2f64.powf(p) - 1.0)).max(1.0))
+        .unwrap_or(1.0);
+    let est = (0..n)
+        .map(|i| {
+            let mut d: f64 = 0.0;
+            for j in i.saturating_sub(4)..(i + 5).min(n) {
+                d = d.max((levels[0][j] - levels[1][j]).abs());
+                if let Some(c) = levels.get(2) {
+                    d = d.max(0.5 * (levels[1][j] - c[j]).abs());
+                }
+            }
+            ESTIMATE_SAFETY * d * factor
+        })
+        .collect();
+    (Some(est), ord)
+}
+
 fn order(fine: &[f64], mid: &[f64], coarse: &[f64]) -> Option<f64> {
     let d1: f64 = fine.iter().zip(mid).map(|(a, b)| (a - b).abs()).sum();
     let d2: f64 = mid.iter().zip(coarse).map(|(a, b)| (a - b).abs()).sum();
@@ -173,27 +232,9 @@ impl<T: Scalar> SolvedImpact<T> {
     }
 
     /// The estimate of a quantity known on every level (finest first) as one number per
-    /// level: the difference of the two finest levels (or half that of the next pair, if
-    /// larger), extrapolated with the observed order where three levels show one above 1/2,
-    /// times the safety factor of the histories; `None` with one level.
+    /// level ([`level_estimate`]).
     fn level_estimate(values: &[f64]) -> Option<f64> {
-        if values.len() < 2 || values.iter().any(|v| !v.is_finite()) {
-            return None;
-        }
-        let d1 = (values[0] - values[1]).abs();
-        let d2 = values.get(2).map(|c| (values[1] - c).abs());
-        let factor = match d2 {
-            Some(d2) if d1 > 0.0 && d2 > 0.0 => {
-                let p = (d2 / d1).log2();
-                if p > 0.5 {
-                    (1.0 / (2f64.powf(p) - 1.0)).max(1.0)
-                } else {
-                    2.0
-                }
-            }
-            _ => 1.0,
-        };
-        Some(ESTIMATE_SAFETY * d1.max(0.5 * d2.unwrap_or(0.0)) * factor)
+        level_estimate(values)
     }
 
     /// Separation time c1 t/R of the finest grid (the last time the contact ended, the

@@ -3,6 +3,8 @@
 //!
 //! * [`half_plane`]: the material, the Rayleigh cubic and its roots, the impulse responses
 //!   g_zz, g_xz, g_xx in closed form in every wave region, the Rayleigh constants;
+//! * [`half_space`]: the elastic half-space's axisymmetric response (three dimensions): the
+//!   step response of a normal point force in closed form and its means over rings;
 //! * [`moments`]: the step responses W and the moments Int g s^-n ds in closed form (the
 //!   cells of a time-marching solver), principal values and the Rayleigh delta included;
 //! * [`cells`]: the displacement due to a load uniform on a strip and piecewise constant or
@@ -25,10 +27,12 @@ pub mod cells;
 pub mod edge;
 pub mod error;
 pub mod half_plane;
+pub mod half_space;
 pub mod moments;
 pub mod rational;
 pub mod transform;
 
 pub use error::{LambError, Result};
 pub use half_plane::{poisson_of, Estimate, HalfPlane, RayleighConstants, Region, Triple};
+pub use half_space::{Annulus, HalfSpace};
 pub use transform::Lamb;

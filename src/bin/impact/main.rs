@@ -27,7 +27,7 @@ const PROGRESS_AFTER_S: f64 = 2.0;
 
 /// Runs `impact run`, its progress on stderr once it has taken a few seconds (hidden by
 /// indicatif where stderr is not a terminal).
-fn run_with_progress(input: &RunInput) -> Result<dyncontact::report::impact::RunReport, Error> {
+fn run_with_progress(input: &RunInput) -> Result<impact_api::AnyRunReport, Error> {
     let bar = indicatif::ProgressBar::with_draw_target(
         Some(1000),
         indicatif::ProgressDrawTarget::hidden(),
@@ -40,7 +40,7 @@ fn run_with_progress(input: &RunInput) -> Result<dyncontact::report::impact::Run
     );
     let start = std::time::Instant::now();
     let mut shown = false;
-    let r = impact_api::run(input, |p: impact::Progress| {
+    let r = impact_api::run_any(input, |p: impact::Progress| {
         if !shown && start.elapsed().as_secs_f64() > PROGRESS_AFTER_S {
             bar.set_draw_target(indicatif::ProgressDrawTarget::stderr());
             shown = true;

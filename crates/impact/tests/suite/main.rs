@@ -4,6 +4,7 @@
 
 mod common;
 
+mod axisym;
 mod bridge;
 mod cylinder;
 mod disk;

@@ -8,4 +8,5 @@ mod cells;
 mod closed_forms;
 mod edge;
 mod extreme;
+mod half_space;
 mod mpmath_reference;
