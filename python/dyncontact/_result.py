@@ -177,25 +177,30 @@ class Records:
 
 class PressureProfiles:
     """Pressure profiles of an impact run as 2-D arrays: ``p_over_rho_c1sq[i, j]`` is the
-    mean pressure p/(rho c1^2) of the cell at ``x_over_R[j]`` at time
-    ``c1t_over_R[i]``, and ``error_estimate[i, j]`` its estimate. Profiles end at the
+    mean pressure p/(rho c1^2) of the cell at ``x_over_R[j]`` (the ring at ``r_over_R[j]``
+    in an axisymmetric run) at time ``c1t_over_R[i]``, and ``error_estimate[i, j]`` its
+    estimate. Profiles end at the
     contact's last cell at their time: beyond it the arrays are masked (numpy masked arrays;
     outside the contact the pressure is zero, ``p.filled(0)``)."""
 
     def __init__(self, records: List[Dict[str, Any]], decimal: bool):
-        n = max((len(r["x_over_R"]) for r in records), default=0)
-        longest = max(records, key=lambda r: len(r["x_over_R"]), default=None)
+        # the plane runs' cells are at x_over_R, the axisymmetric runs' rings at r_over_R
+        key = "r_over_R" if records and "r_over_R" in records[0] else "x_over_R"
+        n = max((len(r[key]) for r in records), default=0)
+        longest = max(records, key=lambda r: len(r[key]), default=None)
         dtype = object if decimal else np.float64
         fill = Decimal(0) if decimal else 0.0
         self.c1t_over_R = _array([r["c1t_over_R"] for r in records], decimal)
-        self.x_over_R = _array(longest["x_over_R"], decimal) if longest else np.zeros(0)
+        coords = _array(longest[key], decimal) if longest else np.zeros(0)
+        setattr(self, key, coords)
         p = np.full((len(records), n), fill, dtype=dtype)
         e = np.full((len(records), n), fill, dtype=dtype)
         mask = np.ones((len(records), n), dtype=bool)
         for i, r in enumerate(records):
-            k = len(r["x_over_R"])
+            k = len(r[key])
             p[i, :k] = r["p_over_rho_c1sq"]
-            e[i, :k] = r["error_estimate"]
+            if r.get("error_estimate") is not None:
+                e[i, :k] = r["error_estimate"]
             mask[i, :k] = False
         self.p_over_rho_c1sq = np.ma.masked_array(p, mask=mask.copy())
         self.error_estimate = np.ma.masked_array(e, mask=mask)

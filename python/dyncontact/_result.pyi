@@ -24,6 +24,7 @@ class Records:
 class PressureProfiles:
     c1t_over_R: np.ndarray
     x_over_R: np.ndarray
+    r_over_R: np.ndarray
     p_over_rho_c1sq: np.ma.MaskedArray
     error_estimate: np.ma.MaskedArray
     def __init__(self, records: list[dict[str, Any]], decimal: bool) -> None: ...

@@ -74,6 +74,8 @@ def run(
     digits: Optional[int] = None,
     force: bool = False,
     memory_limit_gib: Optional[float] = None,
+    geometry: Optional[str] = None,
+    dr: Optional[float] = None,
     progress: _progress.Progress = False,
 ) -> RunResult:
     """Marches an impact (``impact run``): a free striker (``mass_ratio`` = m0/(rho R^2),
@@ -81,6 +83,14 @@ def run(
     arrays over ``c1t_over_R`` (``h_over_R``, ``b_over_R``, ``force_over_rho_c1sq_R``, ...)
     with ``error_estimate[key]`` of the same shape, the rebound, the energy audit and the
     pressure profiles at ``pressure_at`` (times c1 t/R) as 2-D arrays.
+
+    ``geometry="axisymmetric"``: a body of revolution on the elastic half-space
+    (``profile`` ``"sphere:R=.."``, ``"paraboloid:R=.."``, ``"cone:theta_deg=.."`` or
+    ``"flat:a=.."``; ``mass_ratio`` = m/(rho R^3); ring width ``dr``, by default about 30
+    rings across the largest contact radius): ``a_over_R``, ``force_over_rho_c1sq_Rsq``,
+    ``radiated_energy_fraction`` (a history), ``restitution`` after the separation, and
+    Hertz's values and the first-order radiation beside them (``hertz``,
+    ``first_order_radiation``).
 
     ``progress=True`` shows a tqdm bar, a callable receives the fraction done; Ctrl-C
     (KeyboardInterrupt) stops the march within a second. The GIL is released meanwhile.

@@ -126,6 +126,25 @@ def test_impact_run_with_the_cylinder_striker_agrees_with_the_cli(cli):
     assert np.allclose(parts, r.striker_energy_over_rho_c1sq_Rsq, rtol=1e-9, atol=0.0)
 
 
+def test_impact_run_axisymmetric_agrees_with_the_cli(cli):
+    # the sphere on the half-space: the same call, --geometry axisymmetric, its own keys
+    flags = ["--geometry", "axisymmetric", "--poisson", "0.25", "--profile", "sphere:R=1",
+             "--mass-ratio", "4.18879", "--v0-over-c1", "0.05", "--law", "signorini",
+             "--end", "separation:max=15", "--dr", "0.02", "--levels", "2",
+             "--pressure-at", "c1t/R=3"]
+    expected = cli_json(cli("impact", "run", *flags, "--json"), False)
+    r = dyncontact.impact.run(geometry="axisymmetric", poisson=0.25, profile="sphere:R=1",
+                              mass_ratio=4.18879, v0_over_c1=0.05, law="signorini",
+                              end="separation:max=15", dr=0.02, levels=2, pressure_at=[3])
+    same_bits(expected, r.to_dict())
+    assert expected["geometry"] == "axisymmetric"
+    for key in ("a_over_R", "force_over_rho_c1sq_Rsq", "radiated_energy_fraction"):
+        assert len(expected[key]) == len(expected["c1t_over_R"])
+        assert key in expected["error_estimate"]
+    assert 0.0 < expected["restitution"] < 1.0
+    assert r.pressure.r_over_R.shape == r.pressure.p_over_rho_c1sq.shape[1:]
+
+
 @pytest.mark.parametrize("law", ["signorini", "kinematic"])
 def test_impact_edge_agrees_with_the_cli(cli, law):
     expected = cli_json(cli("impact", "edge", "--poisson", "0.25", "--speed-over-c1", "0.3,0.55,0.7,1.4", "--law", law, "--json"), False)

@@ -429,7 +429,10 @@ impl AxiReport {
     }
 
     fn est_json(e: &AxiEstimated) -> Value {
-        json!({"value": e.value, "error_estimate": e.error})
+        match e.error {
+            Some(err) => json!({"value": e.value, "error_estimate": err}),
+            None => json!({"value": e.value}),
+        }
     }
 
     /// The report as one JSON object, keys in [`AXI_KEYS`] order.
@@ -511,21 +514,22 @@ impl AxiReport {
                 json!(r.energy_to_half_space.value),
             );
             o.insert("reimpacts".into(), json!(r.reimpacts));
-            errors.insert("restitution".into(), json!(r.restitution.error));
-            errors.insert(
-                "rebound_speed_over_c1".into(),
-                json!(r.rebound_speed_over_c1.error),
-            );
-            errors.insert(
-                "energy_to_half_space".into(),
-                json!(r.energy_to_half_space.error),
-            );
+            for (k, e) in [
+                ("restitution", r.restitution.error),
+                ("rebound_speed_over_c1", r.rebound_speed_over_c1.error),
+                ("energy_to_half_space", r.energy_to_half_space.error),
+            ] {
+                if let Some(e) = e {
+                    errors.insert(k.into(), json!(e));
+                }
+            }
         }
         if let Some(a) = &self.energy_audit {
-            o.insert(
-                "energy_audit".into(),
-                json!({"largest_defect": a.largest_defect, "bound": a.bound, "within_bound": a.within_bound, "note": a.note}),
-            );
+            let mut audit = json!({"largest_defect": a.largest_defect, "bound": a.bound, "within_bound": a.within_bound});
+            if let Some(note) = a.note {
+                audit["note"] = json!(note);
+            }
+            o.insert("energy_audit".into(), audit);
         }
         o.insert(
             "resolution".into(),
@@ -574,12 +578,15 @@ impl AxiReport {
                 Value::Array(
                     list.iter()
                         .map(|p| {
-                            json!({
+                            let mut q = json!({
                                 "c1t_over_R": p.c1t_over_r,
                                 "r_over_R": p.r_over_r,
                                 "p_over_rho_c1sq": p.p_over_rho_c1sq,
-                                "error_estimate": p.error_estimate,
-                            })
+                            });
+                            if let Some(e) = &p.error_estimate {
+                                q["error_estimate"] = json!(e);
+                            }
+                            q
                         })
                         .collect(),
                 ),
@@ -621,11 +628,11 @@ impl AxiReport {
                 ("rebound_speed_over_c1", &r.rebound_speed_over_c1),
                 ("energy_to_half_space", &r.energy_to_half_space),
             ] {
-                s.push_str(&format!(
-                    "# {k}: {} (error estimate {})\n",
-                    json!(v.value),
-                    json!(v.error)
-                ));
+                let err = v
+                    .error
+                    .map(|e| format!(" (error estimate {})", json!(e)))
+                    .unwrap_or_default();
+                s.push_str(&format!("# {k}: {}{err}\n", json!(v.value)));
             }
         }
         if let Some(h) = &self.hertz {

@@ -1205,3 +1205,120 @@ fn striker_green_prints_the_cylinder_response_with_its_keys() {
         );
     }
 }
+
+/// `impact run --geometry axisymmetric`: the sphere on the half-space, the command
+/// line, its keys with their estimates, Hertz beside it; and its refusals, one line each.
+#[test]
+fn run_axisymmetric_reports_the_sphere_and_refuses_what_does_not_apply() {
+    let v = json(&[
+        "run",
+        "--geometry",
+        "axisymmetric",
+        "--profile",
+        "sphere:R=1",
+        "--mass-ratio",
+        "4.18879",
+        "--v0-over-c1",
+        "0.02",
+        "--law",
+        "signorini",
+        "--end",
+        "c1t/R=14",
+        "--poisson",
+        "0.25",
+        "--json",
+    ]);
+    assert_eq!(v["geometry"], "axisymmetric");
+    let n = v["c1t_over_R"].as_array().unwrap().len();
+    for k in [
+        "h_over_R",
+        "hdot_over_v0",
+        "a_over_R",
+        "force_over_rho_c1sq_Rsq",
+        "kinetic_energy_over_rho_c1sq_Rcu",
+        "work_over_rho_c1sq_Rcu",
+        "radiated_energy_fraction",
+    ] {
+        assert_eq!(v[k].as_array().unwrap().len(), n, "{k}");
+        assert_eq!(v["error_estimate"][k].as_array().unwrap().len(), n, "{k}");
+    }
+    assert_eq!(v["stage"].as_array().unwrap().len(), n);
+    // the default grid puts about 30 rings across the largest contact radius
+    let rings = v["resolution"]["largest_contact_rings"].as_u64().unwrap();
+    assert!((25..=45).contains(&rings), "{rings}");
+    // it separated before c1 t/R = 14: the rebound, its loss, Hertz's numbers beside it
+    let e = num(&v["restitution"]);
+    let rad = num(&v["energy_to_half_space"]);
+    assert!(
+        e > 0.8 && e < 1.0 && (e * e + rad - 1.0).abs() < 1e-12,
+        "{e} {rad}"
+    );
+    assert!(v["error_estimate"]["restitution"].is_number());
+    let hertz_peak = num(&v["hertz"]["peak_force_over_rho_c1sq_Rsq"]);
+    let peak = num(&v["peak_force"]["force_over_rho_c1sq_Rsq"]);
+    assert!(
+        peak < hertz_peak && peak > 0.9 * hertz_peak,
+        "{peak} {hertz_peak}"
+    );
+    assert!(v["first_order_radiation"]["prefactor"].is_number());
+    assert_no_null(&v, "");
+    let base = [
+        "run",
+        "--geometry",
+        "axisymmetric",
+        "--profile",
+        "sphere:R=1",
+        "--poisson",
+        "0.25",
+        "--end",
+        "c1t/R=1",
+        "--mass-ratio",
+        "4",
+        "--v0-over-c1",
+        "0.01",
+    ];
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["--dx", "0.01"], "--dr"),
+        (vec!["--digits", "20"], "digits"),
+        (vec!["--edge-cell", "whole"], "edge-cell"),
+        (
+            vec!["--striker", "elastic:c1=6000,c2=3000,density_ratio=1"],
+            "rigid",
+        ),
+        (vec!["--profile", "wedge:theta_deg=80"], "sphere"),
+        (vec!["--profile", "cone:theta_deg=95"], "theta_deg"),
+        (vec!["--geometry", "spherical"], "geometry"),
+        (vec!["--dr", "0"], "dr"),
+    ];
+    for (extra, word) in cases {
+        let mut args: Vec<&str> = base.to_vec();
+        // a case's flag replaces the base's
+        if let Some(i) = args.iter().position(|a| *a == extra[0]) {
+            args.drain(i..i + 2);
+        }
+        args.extend(extra);
+        let (code, out, err) = impact(&args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(out.is_empty());
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert!(err.contains(word), "{word}: {err}");
+    }
+    // and the plane run refuses the rings' width
+    let (code, _, err) = impact(&[
+        "run",
+        "--poisson",
+        "0.25",
+        "--profile",
+        "parabola:R=1",
+        "--mass-ratio",
+        "10",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "c1t/R=1",
+        "--dr",
+        "0.01",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--dx"), "{err}");
+}
