@@ -202,6 +202,23 @@ impl RunInput {
         }
     }
 
+    /// The times of the pressure profiles asked for, each refused unless in (0, `end`].
+    pub fn pressure_times_within(&self, end: f64) -> R<Vec<f64>> {
+        let times = self.pressure_times()?;
+        for &t in &times {
+            if !(t > 0.0 && t <= end) {
+                return Err(InputError::new(
+                    "pressure_at",
+                    format!(
+                        "invalid --pressure-at time {t}: admissible range is (0, {end}], the run's times"
+                    ),
+                )
+                .into());
+            }
+        }
+        Ok(times)
+    }
+
     /// The times of the pressure profiles asked for.
     pub fn pressure_times(&self) -> R<Vec<f64>> {
         match &self.pressure_at {
@@ -329,19 +346,7 @@ pub fn run_axisymmetric(
     progress: impl FnMut(impact::Progress) -> ControlFlow<()>,
 ) -> R<AxiReport> {
     let c = input.axi_case()?;
-    let times = input.pressure_times()?;
-    for &t in &times {
-        if !(t > 0.0 && t <= c.end) {
-            return Err(InputError::new(
-                "pressure_at",
-                format!(
-                    "invalid --pressure-at time {t}: admissible range is (0, {}], the run's times",
-                    c.end
-                ),
-            )
-            .into());
-        }
-    }
+    let times = input.pressure_times_within(c.end)?;
     let sol = c.solve(progress)?;
     AxiReport::of(&sol, crate::VERSION, &times).map_err(|m| {
         if m.starts_with("invalid --pressure-at") {
@@ -386,19 +391,7 @@ pub fn run(
         )
         .into());
     }
-    let times = input.pressure_times()?;
-    for &t in &times {
-        if !(t > 0.0 && t <= c.end) {
-            return Err(InputError::new(
-                "pressure_at",
-                format!(
-                    "invalid --pressure-at time {t}: admissible range is (0, {}], the run's times",
-                    c.end
-                ),
-            )
-            .into());
-        }
-    }
+    let times = input.pressure_times_within(c.end)?;
     if let Some(d) = input.digits {
         if !(1..=RUN_MAX_DIGITS).contains(&d) {
             return Err(InputError::new(

@@ -82,15 +82,17 @@ pub fn read_table(parameter: &'static str, path: &str, what: &str) -> R<Vec<(f64
     Ok(rows)
 }
 
-/// The profile of `--profile` (`circle:R=..`, `parabola:R=..`, `power:A=..,k=..`,
-/// `wedge:theta_deg=..`, `flat:a=..`, `table:FILE`), in units of R: the radius for the
-/// circle and the parabola, `length` (m, default 1) for the others.
-pub fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
-    let p = "profile";
+/// A profile specification's kind and parameters (`kind:parameters`) and the length scale
+/// of `--length` (m, default 1), each refused naming its flag; `example` shows the form.
+fn kind_and_scale<'s>(
+    spec: &'s str,
+    length: Option<f64>,
+    example: &str,
+) -> R<(&'s str, &'s str, f64)> {
     let (kind, rest) = spec.split_once(':').ok_or_else(|| {
         InputError::new(
-            p,
-            format!("invalid --profile {spec:?}: write kind:parameters, e.g. circle:R=1"),
+            "profile",
+            format!("invalid --profile {spec:?}: write kind:parameters, e.g. {example}"),
         )
     })?;
     let scale = length.unwrap_or(1.0);
@@ -100,6 +102,15 @@ pub fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
             format!("invalid --length = {scale}: admissible range is (0, inf) m"),
         ));
     }
+    Ok((kind, rest, scale))
+}
+
+/// The profile of `--profile` (`circle:R=..`, `parabola:R=..`, `power:A=..,k=..`,
+/// `wedge:theta_deg=..`, `flat:a=..`, `table:FILE`), in units of R: the radius for the
+/// circle and the parabola, `length` (m, default 1) for the others.
+pub fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
+    let p = "profile";
+    let (kind, rest, scale) = kind_and_scale(spec, length, "circle:R=1")?;
     let radius_only = |what: &str| -> R<()> {
         if length.is_some() {
             return Err(InputError::new(
@@ -172,19 +183,7 @@ pub fn profile(spec: &str, length: Option<f64>) -> R<Profile> {
 /// the sphere and the paraboloid, `length` (m, default 1) for the punch.
 pub fn axi_profile(spec: &str, length: Option<f64>) -> R<AxiProfile> {
     let p = "profile";
-    let (kind, rest) = spec.split_once(':').ok_or_else(|| {
-        InputError::new(
-            p,
-            format!("invalid --profile {spec:?}: write kind:parameters, e.g. sphere:R=1"),
-        )
-    })?;
-    let scale = length.unwrap_or(1.0);
-    if !(scale.is_finite() && scale > 0.0) {
-        return Err(InputError::new(
-            "length",
-            format!("invalid --length = {scale}: admissible range is (0, inf) m"),
-        ));
-    }
+    let (kind, rest, scale) = kind_and_scale(spec, length, "sphere:R=1")?;
     let pairs = kv(p, rest, "--profile")?;
     Ok(match kind {
         "sphere" | "paraboloid" | "parabola" => {

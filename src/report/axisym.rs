@@ -342,8 +342,10 @@ impl AxiReport {
                 largest_defect: largest,
                 bound: ENERGY_DEFECT_BOUND,
                 within_bound: largest <= ENERGY_DEFECT_BOUND,
-                note: (largest > ENERGY_DEFECT_BOUND)
-                    .then_some("kinetic energy plus the work on the half-space drifted from the impact energy: refine the grid"),
+                note: (largest > ENERGY_DEFECT_BOUND).then_some(match sol.case.law {
+                    impact::EdgeLaw::Kinematic => "the kinematic law's edge ring carries a pressure tied to its neighbour's, not held to the striker: the work it takes is not the striker's (docs/axisymmetric.md, section 6)",
+                    impact::EdgeLaw::Signorini => "kinetic energy plus the work on the half-space drifted from the impact energy: refine the grid",
+                }),
             }
         });
         let peak_force =

@@ -733,6 +733,7 @@ fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
         ("edge_exponents", Some((1600, 1200))),
         ("impact_history", Some((1600, 1200))),
         ("impact_pressure", Some((1600, 700))),
+        ("sphere_impact", Some((1800, 600))),
     ] {
         let png = decode_png(&d.join(format!("{name}.png")));
         let svg = svg_size(&d.join(format!("{name}.svg")));
@@ -765,6 +766,32 @@ fn pngs_are_antialiased_renderings_of_the_svgs_at_the_page_size() {
             );
         }
     }
+}
+
+/// The sphere on the half-space: the restitution rises toward Hertz's 1 as the impact slows,
+/// each row's loss is 1 - e^2, and at V0/c1 = 1e-4 the radiated share is within 2 percent of
+/// the first-order radiation of Hertz's force (Hunter's half-sine within 8).
+#[test]
+fn sphere_impact_approaches_hertz_and_the_first_order_radiation() {
+    let csv = Csv::read(&quick_all().join("sphere_impact.csv"));
+    assert!(csv.rows.len() >= 4);
+    let mut last_e = 0.0;
+    for r in csv.rows.iter().rev() {
+        let e = num(r, "restitution");
+        let rad = num(r, "radiated_energy_fraction");
+        assert!(e < 1.0 && e > last_e, "restitution {e} after {last_e}");
+        assert!((e * e + rad - 1.0).abs() < 1e-12);
+        assert!(num(r, "err_restitution") < 1.0 - e);
+        last_e = e;
+    }
+    let slow = csv
+        .rows
+        .iter()
+        .find(|r| (num(r, "v0_over_c1") - 1e-4).abs() < 1e-12)
+        .expect("the row at 1e-4");
+    let rad = num(slow, "radiated_energy_fraction");
+    assert!((rad / num(slow, "first_order_fraction") - 1.0).abs() < 0.02);
+    assert!((rad / num(slow, "hunter_fraction") - 1.0).abs() < 0.08);
 }
 
 /// The striker comparison over whole impacts: the rigid rows equal a direct library solve of

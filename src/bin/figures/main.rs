@@ -108,6 +108,11 @@ const FIGURES: &[Entry] = &[
         about: "rigid, elastic and thin-shell strikers of equal mass and impact speed: h, force, b and the striker's energy against c1 t/R",
         draw: figures::impact_strikers::impact_strikers,
     },
+    Entry {
+        name: "sphere_impact",
+        about: "rigid sphere on the elastic half-space (own density): restitution and radiated energy against V0/c1 over four decades beside Hertz and Hunter, force histories against Hertz's",
+        draw: figures::sphere_impact::sphere_impact,
+    },
 ];
 
 /// Redraw the reference paper's figures (and a regime map) from the library.
@@ -123,7 +128,7 @@ const FIGURES: &[Entry] = &[
 struct Cli {
     /// Figures to draw (default: all). Names: fig3 fig4 fig5 fig6 fig7 regime_map
     /// field_snapshot error_vs_time impact_history impact_pressure edge_exponents
-    /// impact_accuracy impact_strikers.
+    /// impact_accuracy impact_strikers sphere_impact.
     names: Vec<String>,
     /// Output directory (created if missing).
     #[arg(long, default_value = "figures")]

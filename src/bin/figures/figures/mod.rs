@@ -19,6 +19,7 @@ pub mod output;
 pub mod paper;
 pub mod plot;
 pub mod regime_map;
+pub mod sphere_impact;
 
 use std::fmt;
 use std::path::PathBuf;
