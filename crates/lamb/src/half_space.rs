@@ -519,13 +519,13 @@ fn integrate<T: Real + CachedRules>(
     Ok((value, error))
 }
 
-/// The halving depth after which a piece is accepted at [`STAGNANT_TOL`] (its difference
+/// The halving depth after which a piece is accepted at [`STAGNANT_UNITS`] (its difference
 /// its error).
 const STAGNANT_DEPTH: usize = 12;
 
 /// The relative difference of the two rules accepted on a piece halved [`STAGNANT_DEPTH`]
-/// times (counted in the error estimate).
-const STAGNANT_TOL: f64 = 1e-10;
+/// times, in units of the working precision (counted in the error estimate).
+const STAGNANT_UNITS: f64 = 1e4;
 
 /// Int_l^r f by Gauss-Legendre rules in v, x = l + (r - l)(1 - cos pi v)/2 (square-root
 /// behaviours at the ends become analytic), n and 2n nodes, halving the piece until
@@ -588,8 +588,8 @@ fn piece<T: Real + CachedRules>(
         let ok = diff <= (tol * abs).max(floor) || diff <= f64::MIN_POSITIVE;
         // a piece whose rules stop agreeing better under halving is at the rounding of its
         // node positions (a lens kink far out, where rho = s t carries rho's rounding): its
-        // difference is then its honest error, accepted below STAGNANT_TOL
-        let stagnant = depth >= STAGNANT_DEPTH && diff <= STAGNANT_TOL * abs;
+        // difference is then its honest error, accepted below STAGNANT_UNITS
+        let stagnant = depth >= STAGNANT_DEPTH && diff <= STAGNANT_UNITS * unit * abs;
         if ok || stagnant || depth >= 40 {
             if !ok && !stagnant {
                 return Err(LambError::Complex(
