@@ -133,20 +133,7 @@ impl RunInput {
         let striker = spec::striker(&self.striker, c1)?;
         let prof = spec::profile(&self.profile, self.length)?;
         let law = impact_law(&self.law)?;
-        let (end, stop) = spec::end(&self.end)?;
-        let drive = spec::drive(
-            self.driven.as_deref(),
-            self.mass_ratio,
-            self.v0_over_c1,
-            &striker,
-        )?;
-        if stop == Stop::AtSeparation && !matches!(drive, impact::Drive::Free { .. }) {
-            return Err(InputError::new(
-                "end",
-                "invalid --end separation: only a free striker separates (give --mass-ratio and --v0-over-c1, or an end time c1t/R=VALUE)",
-            )
-            .into());
-        }
+        let (end, stop, drive) = self.end_and_drive(&striker)?;
         let mut c = ImpactCase::new(nu, prof, drive, law, end).with_striker(striker);
         c.stop = stop;
         c.dx = self.dx;
@@ -164,6 +151,26 @@ impl RunInput {
             }
         };
         Ok(c)
+    }
+
+    /// The end, where the run stops and the drive (a free `striker` or a prescribed
+    /// penetration); stopping at the separation is refused for a driven striker.
+    fn end_and_drive(&self, striker: &impact::Striker) -> R<(f64, Stop, impact::Drive)> {
+        let (end, stop) = spec::end(&self.end)?;
+        let drive = spec::drive(
+            self.driven.as_deref(),
+            self.mass_ratio,
+            self.v0_over_c1,
+            striker,
+        )?;
+        if stop == Stop::AtSeparation && !matches!(drive, impact::Drive::Free { .. }) {
+            return Err(InputError::new(
+                "end",
+                "invalid --end separation: only a free striker separates (give --mass-ratio and --v0-over-c1, or an end time c1t/R=VALUE)",
+            )
+            .into());
+        }
+        Ok((end, stop, drive))
     }
 
     /// Every input missing, named in one error (the first one's parameter).
@@ -268,20 +275,7 @@ impl RunInput {
         }
         let profile = spec::axi_profile(&self.profile, self.length)?;
         let law = impact_law(&self.law)?;
-        let (end, stop) = spec::end(&self.end)?;
-        let drive = spec::drive(
-            self.driven.as_deref(),
-            self.mass_ratio,
-            self.v0_over_c1,
-            &impact::Striker::Rigid,
-        )?;
-        if stop == Stop::AtSeparation && !matches!(drive, impact::Drive::Free { .. }) {
-            return Err(InputError::new(
-                "end",
-                "invalid --end separation: only a free striker separates (give --mass-ratio and --v0-over-c1, or an end time c1t/R=VALUE)",
-            )
-            .into());
-        }
+        let (end, stop, drive) = self.end_and_drive(&impact::Striker::Rigid)?;
         let c = impact::axisym::AxiCase {
             poisson: nu,
             profile,

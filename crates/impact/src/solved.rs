@@ -231,12 +231,6 @@ impl<T: Scalar> SolvedImpact<T> {
         self.runs.last().map(|r| r.dt).unwrap_or(T::of(0.0))
     }
 
-    /// The estimate of a quantity known on every level (finest first) as one number per
-    /// level ([`level_estimate`]).
-    fn level_estimate(values: &[f64]) -> Option<f64> {
-        level_estimate(values)
-    }
-
     /// Separation time c1 t/R of the finest grid (the last time the contact ended, the
     /// striker off the surface at the run's end), with its estimate from the levels'
     /// separations (never below the finest step); `None` when the finest grid's striker is
@@ -280,7 +274,7 @@ impl<T: Scalar> SolvedImpact<T> {
             if coarser_in_contact {
                 return None;
             }
-            Self::level_estimate(&pick(q))
+            level_estimate(&pick(q))
         };
         Ok(Rebound {
             separation: Value {

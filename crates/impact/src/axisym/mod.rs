@@ -563,18 +563,6 @@ impl SolvedAxi {
             reimpacts: self.runs[0].reimpacts,
         })
     }
-
-    /// The finest level's ring pressures over rho c1^2 at the step whose middle is nearest
-    /// to c1 t/R = `t`: (the step's middle time, ring centres r/R, pressures).
-    pub fn pressure_at(&self, t: f64) -> Option<(f64, Vec<f64>, Vec<f64>)> {
-        let fine = &self.runs[0];
-        let n = ((t / fine.dt) + 0.5).round().max(1.0) as usize;
-        let s = fine.steps.get(n - 1)?;
-        let m2 = self.m * self.m;
-        let r = (0..s.pressure.len()).map(|i| i as f64 * fine.dr).collect();
-        let p = s.pressure.iter().map(|p| p * m2).collect();
-        Some((s.t - 0.5 * fine.dt, r, p))
-    }
 }
 
 #[cfg(test)]
