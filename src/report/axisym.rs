@@ -343,7 +343,7 @@ impl AxiReport {
                 bound: ENERGY_DEFECT_BOUND,
                 within_bound: largest <= ENERGY_DEFECT_BOUND,
                 note: (largest > ENERGY_DEFECT_BOUND).then_some(match sol.case.law {
-                    impact::EdgeLaw::Kinematic => "the kinematic law's edge ring carries a pressure tied to its neighbour's, not held to the striker: the work it takes is not the striker's (docs/axisymmetric.md, section 6)",
+                    impact::EdgeLaw::Kinematic => "the kinematic law's contact is wider than Hertz's and its edge pulls (p ~ d^(-1/2)): the edge releases energy as it advances and takes it back as it recedes, as an adhesive contact's does; the defect is that energy, not an error of the march (docs/axisymmetric.md, section 6)",
                     impact::EdgeLaw::Signorini => "kinetic energy plus the work on the half-space drifted from the impact energy: refine the grid",
                 }),
             }

@@ -84,6 +84,39 @@ impl<T: Scalar> Factor<T> {
     }
 }
 
+/// Murty's least-index principal pivoting for the step's linear complementarity problem
+/// (`docs/impact.md`, section 9): over the cells (or rings) 0..=top, p >= 0 on the contact,
+/// gap >= 0 off it, one of the two zero on each. Started from the contact 0..=k0 (none when
+/// `k0` is `None`); `solve` gives the step's solution for an ascending contact set (the
+/// empty set included), `wrong(solution, i, inside)` tells whether cell i is on the wrong
+/// side (pulling inside, interpenetrating outside). The first wrong cell changes side until
+/// none is. The rule ends for a P-matrix (the step's matrix, positive definite up to the
+/// striker's rank-one coupling); `None` when it has not settled within a bound that guards
+/// against a matrix that is not. Returns the contact set and its solution.
+pub(crate) fn least_index_pivoting<S, E>(
+    top: usize,
+    k0: Option<usize>,
+    mut solve: impl FnMut(&[usize]) -> Result<S, E>,
+    mut wrong: impl FnMut(&S, usize, bool) -> bool,
+) -> Result<Option<(Vec<usize>, S)>, E> {
+    let mut inside = vec![false; top + 1];
+    if let Some(k0) = k0 {
+        for c in inside.iter_mut().take(k0.min(top) + 1) {
+            *c = true;
+        }
+    }
+    let limit = 8 * (top + 1) + 16;
+    for _ in 0..limit {
+        let cells: Vec<usize> = (0..=top).filter(|&i| inside[i]).collect();
+        let s = solve(&cells)?;
+        match (0..=top).find(|&i| wrong(&s, i, inside[i])) {
+            Some(i) => inside[i] = !inside[i],
+            None => return Ok(Some((cells, s))),
+        }
+    }
+    Ok(None)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -92,6 +125,51 @@ mod tests {
         (0..n)
             .map(|i| ((0..n).map(|j| a(i, j) * x[j]).sum::<f64>() - r[i]).abs())
             .fold(0.0, f64::max)
+    }
+
+    /// Least-index pivoting solves small complementarity problems w = M z + q >= 0, z >= 0,
+    /// z.w = 0 (M positive definite) whose solutions are known by hand, from any start, and
+    /// returns a contact that is not a leading block when the solution has one.
+    #[test]
+    fn least_index_pivoting_solves_small_complementarity_problems() {
+        let m = [[2.0, 1.0, 0.5], [1.0, 2.0, 1.0], [0.5, 1.0, 2.0]];
+        let solve = |q: [f64; 3], set: &[usize]| -> Result<Vec<f64>, ()> {
+            let n = set.len();
+            let f = Factor::new(n, None, |i, j| m[set[i]][set[j]], 0.0, vec![1.0; n]).ok_or(())?;
+            let r: Vec<f64> = set.iter().map(|&i| -q[i]).collect();
+            let zs = f.solve(&r).ok_or(())?;
+            let mut z = vec![0.0; 3];
+            for (&i, v) in set.iter().zip(zs) {
+                z[i] = v;
+            }
+            Ok(z)
+        };
+        let w = |q: [f64; 3], z: &[f64], i: usize| -> f64 {
+            (0..3).map(|j| m[i][j] * z[j]).sum::<f64>() + q[i]
+        };
+        // (q, the contact, z on it)
+        let cases: [([f64; 3], Vec<usize>, Vec<f64>); 4] = [
+            ([1.0, 1.0, 1.0], vec![], vec![0.0, 0.0, 0.0]),
+            ([-2.0, 1.0, 1.0], vec![0], vec![1.0, 0.0, 0.0]),
+            ([-1.0, 2.0, -1.0], vec![0, 2], vec![0.4, 0.0, 0.4]),
+            ([-3.5, -4.0, -3.5], vec![0, 1, 2], vec![1.0, 1.0, 1.0]),
+        ];
+        for (q, contact, z0) in cases {
+            for start in [None, Some(0), Some(2)] {
+                let (set, z) = least_index_pivoting(
+                    2,
+                    start,
+                    |set: &[usize]| solve(q, set),
+                    |z: &Vec<f64>, i, inside| if inside { z[i] < 0.0 } else { w(q, z, i) < 0.0 },
+                )
+                .unwrap()
+                .unwrap();
+                assert_eq!(set, contact, "q {q:?} from {start:?}");
+                for i in 0..3 {
+                    assert!((z[i] - z0[i]).abs() < 1e-14, "q {q:?}: z {z:?}");
+                }
+            }
+        }
     }
 
     /// The rank-one coupling of a band matrix whose pivots need row swaps, through

@@ -8,7 +8,7 @@ use super::profile::AxiProfile;
 use super::tables::{ring_area_over_pi, RingTables};
 use crate::case::Drive;
 use crate::error::{ImpactError, Result};
-use crate::linalg::Factor;
+use crate::linalg::{least_index_pivoting, Factor};
 use crate::march::EdgeLaw;
 
 /// The state at the end of one step (units c1 = mu = 1, lengths in R).
@@ -139,10 +139,7 @@ impl<'a> AxiMarch<'a> {
 
     /// The current step's contribution to ring i's displacement.
     fn current(&self, i: usize, p: &[f64]) -> f64 {
-        let nr = self.rings();
-        let block = self.tables.block(0).unwrap_or(&[]);
-        let row = &block[i * nr..i * nr + p.len()];
-        self.dr * row.iter().zip(p).map(|(c, q)| c * q).sum::<f64>()
+        ring_current(self.tables, self.dr, i, p)
     }
 
     /// Solves the contact system on rings 0..c: (pressures, force).
@@ -407,8 +404,12 @@ impl<'a> AxiMarch<'a> {
         Ok((p, force))
     }
 
-    /// Signorini's conditions by an active set of whole rings 0..c: a ring leaves when its
-    /// pressure is negative, the next one enters when the striker would penetrate it.
+    /// Signorini's conditions on whole rings: the step's linear complementarity problem over
+    /// rings 0..max_rings - 1 (p >= 0 on the contact, no interpenetration of a ring's mean
+    /// off it), by the plane march's least-index pivoting started from the previous step's
+    /// rings 0..prev_c - 1. The contact need not be a disk: a light punch's middle may lift
+    /// off while its rim still pushes. Returns the pressures (zeros off the contact, up to
+    /// its last ring) and the force.
     fn active_set(
         &mut self,
         prev_c: usize,
@@ -417,39 +418,79 @@ impl<'a> AxiMarch<'a> {
         h_pred: f64,
         t: f64,
     ) -> Result<(Vec<f64>, f64)> {
-        let mut c = prev_c.min(max_rings);
-        let mut tried = vec![false; max_rings + 2];
-        let mass = self.mass;
-        let dt = self.dt;
-        let h_of = |force: f64| match mass {
-            Some(m) => h_pred - dt * dt * force / (2.0 * m),
-            None => h_pred,
+        let Some(top) = max_rings.checked_sub(1) else {
+            return Ok((Vec::new(), 0.0));
         };
-        loop {
-            tried[c] = true;
-            let (p, force) = if c == 0 {
-                (Vec::new(), 0.0)
-            } else {
-                let rhs: Vec<f64> = (0..c)
-                    .map(|i| h_pred - self.fbar[i].unwrap_or(0.0) - hist[i])
-                    .collect();
-                self.solve(c, &rhs, t)?
-            };
-            if c > 0 && p[c - 1] < 0.0 && !tried[c - 1] {
-                c -= 1;
-                continue;
-            }
-            if c < max_rings {
-                let h = h_of(force);
-                let w = hist[c] + self.current(c, &p);
-                let pen = h - self.fbar[c].unwrap_or(f64::INFINITY) - w;
-                if pen > 0.0 && !tried[c + 1] {
-                    c += 1;
-                    continue;
+        let (mass, dt, dr, tables) = (self.mass, self.dt, self.dr, self.tables);
+        let fbar = self.fbar.clone();
+        let settled = least_index_pivoting(
+            top,
+            prev_c.checked_sub(1),
+            |rings: &[usize]| self.solve_rings(rings, hist, h_pred, t),
+            |(p, force): &(Vec<f64>, f64), i, inside| {
+                if inside {
+                    return p[i] < 0.0;
                 }
-            }
-            return Ok((p, force));
+                // beyond the striker's surface the gap is open
+                let Some(f) = fbar[i] else {
+                    return false;
+                };
+                let h = match mass {
+                    Some(m) => h_pred - dt * dt * force / (2.0 * m),
+                    None => h_pred,
+                };
+                h - f - hist[i] - ring_current(tables, dr, i, p) > 0.0
+            },
+        )?;
+        settled.map(|(_, s)| s).ok_or_else(|| ImpactError::Step {
+            time: format!("{t:.6}"),
+            reason: "the contact among whole rings did not settle (least-index pivoting)".into(),
+        })
+    }
+
+    /// The step's solution with the contact rings `rings` (ascending): the pressures up to
+    /// the last contact ring (zeros off the contact) and the force. A disk 0..c - 1 takes the
+    /// kept factorisation; any other set is factorised here.
+    fn solve_rings(
+        &mut self,
+        rings: &[usize],
+        hist: &[f64],
+        h_pred: f64,
+        t: f64,
+    ) -> Result<(Vec<f64>, f64)> {
+        let Some(&last) = rings.last() else {
+            return Ok((Vec::new(), 0.0));
+        };
+        let rhs: Vec<f64> = rings
+            .iter()
+            .map(|&i| h_pred - self.fbar[i].unwrap_or(0.0) - hist[i])
+            .collect();
+        if rings.len() == last + 1 {
+            return self.solve(rings.len(), &rhs, t);
         }
+        let gamma = self.mass.map_or(0.0, |m| self.dt * self.dt / (2.0 * m));
+        let nr = self.rings();
+        let block = self.tables.block(0).unwrap_or(&[]);
+        let dr = self.dr;
+        let singular = || ImpactError::Step {
+            time: format!("{t:.6}"),
+            reason: format!("the contact system of rings {rings:?} is singular"),
+        };
+        let f = Factor::new(
+            rings.len(),
+            None,
+            |i, j| dr * block[rings[i] * nr + rings[j]],
+            gamma,
+            rings.iter().map(|&j| self.area[j]).collect(),
+        )
+        .ok_or_else(singular)?;
+        let pc = f.solve(&rhs).ok_or_else(singular)?;
+        let mut p = vec![0.0; last + 1];
+        for (&i, &v) in rings.iter().zip(&pc) {
+            p[i] = v;
+        }
+        let force = p.iter().zip(&self.area).map(|(q, a)| q * a).sum();
+        Ok((p, force))
     }
 
     /// The reported contact radius: geometric under the kinematic law; under Signorini's the
@@ -478,6 +519,15 @@ impl<'a> AxiMarch<'a> {
             }
         }
     }
+}
+
+/// The displacement of ring i's mean at the end of a step due to that step's own ring
+/// pressures p (rings 0..p.len()).
+fn ring_current(tables: &RingTables, dr: f64, i: usize, p: &[f64]) -> f64 {
+    let nr = tables.rings();
+    let block = tables.block(0).unwrap_or(&[]);
+    let row = &block[i * nr..i * nr + p.len()];
+    dr * row.iter().zip(p).map(|(c, q)| c * q).sum::<f64>()
 }
 
 /// The rings whose centres lie within radius a (ring 0 as soon as a > 0).

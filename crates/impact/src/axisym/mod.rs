@@ -185,7 +185,8 @@ impl AxiCase {
     }
 
     /// The largest contact radius expected: Hertz's quasi-static one (the sphere and its
-    /// paraboloid, E* = 2 mu/(1 - nu)), Sneddon's for the cone, from the impact energy; the
+    /// paraboloid, E* = 2 mu/(1 - nu)), Sneddon's for the cone, from the impact energy (under
+    /// the kinematic law the geometric radius of the quasi-static impact with that law); the
     /// geometric one at the end's penetration when driven; the punch's radius.
     pub fn largest_radius(&self) -> Option<f64> {
         let estar = 2.0 / (1.0 - self.poisson);
@@ -199,19 +200,42 @@ impl AxiCase {
                 v0_over_c1,
             } => {
                 let energy = 0.5 * mass_ratio / m2 * v0_over_c1 * v0_over_c1;
-                match self.profile {
-                    AxiProfile::Sphere { radius } | AxiProfile::Paraboloid { radius } => {
+                let pi = std::f64::consts::PI;
+                match (&self.profile, self.law) {
+                    (
+                        AxiProfile::Sphere { radius } | AxiProfile::Paraboloid { radius },
+                        EdgeLaw::Signorini,
+                    ) => {
                         // (8/15) E* R^(1/2) h^(5/2) = energy, a = (R h)^(1/2)
                         let h = (15.0 * energy / (8.0 * estar * radius.sqrt())).powf(0.4);
                         Some((radius * h).sqrt())
                     }
-                    AxiProfile::Cone { theta_deg } => {
+                    (
+                        AxiProfile::Sphere { radius } | AxiProfile::Paraboloid { radius },
+                        EdgeLaw::Kinematic,
+                    ) => {
+                        // the geometric contact a = (2 R h)^(1/2) carries Hertz's pressure for
+                        // a plus a punch's of depth -h (docs/axisymmetric.md, section 6):
+                        // F = (2^(3/2)/3) E* R^(1/2) h^(3/2), (2^(5/2)/15) E* R^(1/2) h^(5/2)
+                        // = energy
+                        let h =
+                            (15.0 * energy / (2f64.powf(2.5) * estar * radius.sqrt())).powf(0.4);
+                        Some((2.0 * radius * h).sqrt())
+                    }
+                    (AxiProfile::Cone { theta_deg }, EdgeLaw::Signorini) => {
                         // P = (2/pi) E* tan(theta) h^2, a = (2/pi) h tan(theta)
                         let tan = theta_deg.to_radians().tan();
-                        let h = (3.0 * std::f64::consts::PI * energy / (2.0 * estar * tan)).cbrt();
-                        Some(2.0 / std::f64::consts::PI * h * tan)
+                        let h = (3.0 * pi * energy / (2.0 * estar * tan)).cbrt();
+                        Some(2.0 / pi * h * tan)
                     }
-                    AxiProfile::Flat { radius } => Some(radius),
+                    (AxiProfile::Cone { theta_deg }, EdgeLaw::Kinematic) => {
+                        // a = h tan(theta): Sneddon's force (pi/2) E* a^2/tan(theta) plus a
+                        // punch's of depth h (1 - pi/2), F = (2 - pi/2) E* tan(theta) h^2
+                        let tan = theta_deg.to_radians().tan();
+                        let h = (3.0 * energy / ((2.0 - pi / 2.0) * estar * tan)).cbrt();
+                        Some(h * tan)
+                    }
+                    (AxiProfile::Flat { radius }, _) => Some(*radius),
                 }
             }
             _ => self

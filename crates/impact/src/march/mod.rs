@@ -11,7 +11,7 @@ use complexfn::quadrature::CachedRules;
 use crate::case::Drive;
 use crate::error::{ImpactError, Result};
 use crate::history::{HistorySum, KernelRows};
-use crate::linalg::Factor;
+use crate::linalg::{least_index_pivoting, Factor};
 use crate::profile::Profile;
 use crate::scalar::Scalar;
 use crate::tables::{ShapeRules, Tables};
@@ -580,49 +580,37 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
     fn whole_cells(&self, d: &StepData<T>, k0: usize, imax: usize) -> Result<Option<StepSet<T>>> {
         let top = imax.min(self.kcap).min(d.fbar.len() - 1);
         let zero = T::of(0.0);
-        let mut inside = vec![false; top + 1];
-        for c in inside.iter_mut().take(k0.min(top) + 1) {
-            *c = true;
-        }
-        // Murty's rule ends for a P-matrix; the bound only guards against a matrix that is not
-        let limit = 8 * (top + 1) + 16;
-        for _ in 0..limit {
-            let cells: Vec<usize> = (0..=top).filter(|&i| inside[i]).collect();
-            let (p, f) = match cells.last() {
-                Some(_) => self.solve_cells(d, &cells)?,
-                None => (Vec::new(), zero),
-            };
-            // the first cell on the wrong side
-            let mut flip = None;
-            for i in 0..=top {
-                let wrong = if inside[i] {
+        let start = Some(k0.min(top));
+        let settled = least_index_pivoting(
+            top,
+            start,
+            |cells: &[usize]| match cells.last() {
+                Some(_) => self.solve_cells(d, cells),
+                None => Ok((Vec::new(), zero)),
+            },
+            |(p, f): &(Vec<T>, T), i, inside| {
+                if inside {
                     p[i] < 0.0
                 } else {
-                    match d.target(i, f) {
-                        Ok(target) => self.displacement(i, &d.hist, &p) - target < 0.0,
+                    match d.target(i, *f) {
+                        Ok(target) => self.displacement(i, &d.hist, p) - target < 0.0,
                         // beyond the profile's extent the gap is open
                         Err(_) => false,
                     }
-                };
-                if wrong {
-                    flip = Some(i);
-                    break;
                 }
-            }
-            match flip {
-                Some(i) => inside[i] = !inside[i],
-                None => {
-                    return Ok(cells.last().map(|&k| {
-                        let b = self.edge_fit(k, &p);
-                        (k, b, p, f)
-                    }))
-                }
-            }
+            },
+        )?;
+        match settled {
+            Some((cells, (p, f))) => Ok(cells.last().map(|&k| {
+                let b = self.edge_fit(k, &p);
+                (k, b, p, f)
+            })),
+            None => Err(ImpactError::Step {
+                time: format!("{:.6}", d.t.to_f64()),
+                reason: "the contact among whole cells did not settle (least-index pivoting)"
+                    .into(),
+            }),
         }
-        Err(ImpactError::Step {
-            time: format!("{:.6}", d.t.to_f64()),
-            reason: "the contact among whole cells did not settle (least-index pivoting)".into(),
-        })
     }
 
     /// Solves the step with the contact cells `cells` (ascending, not empty): the pressures

@@ -317,6 +317,93 @@ fn a_driven_punch_carries_the_plane_wave() {
     }
 }
 
+/// Signorini's conditions on every ring of a light punch, checked with the displacements
+/// recomputed here from `lamb::HalfSpace::ring_step` (not the march's tables): at the end of
+/// every step each ring under the punch either pushes (p > 0) and sits on the punch, or
+/// carries nothing and is not penetrated. The punch stops in its plane-wave stage and its
+/// middle lifts off while its rim still pushes: the contact is not a disk, which an active
+/// set of whole disks could not find (it held the middle in tension, down to -7e-3 mu, and
+/// the punch in contact until c1 t/R = 2.95 instead of 0.86).
+#[test]
+fn a_light_punch_keeps_signorini_on_every_ring() {
+    let c = AxiCase {
+        poisson: 0.25,
+        profile: AxiProfile::Flat { radius: 1.0 },
+        drive: Drive::Free {
+            mass_ratio: 0.3,
+            v0_over_c1: 0.01,
+        },
+        law: EdgeLaw::Signorini,
+        end: 20.0,
+        stop: Stop::AtSeparation,
+        dr: Some(1.0 / 20.5),
+        kappa: 2.0,
+        levels: 1,
+    };
+    let sol = solve(&c);
+    let run = &sol.runs[0];
+    let space = HalfSpace::from_poisson(0.25).unwrap();
+    let kappa = run.dt / run.dr;
+    let under = 21; // rings 0..=20 under the punch: (20 + 1/2) dr = R
+    let steps = &run.steps;
+    // U_ij(l kappa), unit ring width, cached
+    let mut u = std::collections::HashMap::new();
+    let mut step_u = |i: usize, j: usize, l: usize| -> f64 {
+        *u.entry((i, j, l)).or_insert_with(|| {
+            let r = lamb::Annulus::ring_cell(i, &1.0).unwrap();
+            let s = lamb::Annulus::ring_cell(j, &1.0).unwrap();
+            space.ring_step(&r, &s, &(l as f64 * kappa)).unwrap().value
+        })
+    };
+    let mut holes = 0;
+    for (n, st) in steps.iter().enumerate() {
+        assert!(
+            st.pressure.iter().all(|&p| p >= 0.0),
+            "step {n}: {:?}",
+            st.pressure
+        );
+        let contact: Vec<bool> = (0..under)
+            .map(|i| st.pressure.get(i).is_some_and(|&p| p > 0.0))
+            .collect();
+        // not a disk: a ring off inside a ring on
+        let last_on = contact.iter().rposition(|&c| c);
+        if last_on.is_some_and(|k| contact[..k].iter().any(|&c| !c)) {
+            holes += 1;
+        }
+        for (i, &touching) in contact.iter().enumerate() {
+            let mut w = 0.0;
+            for (m, past) in steps[..=n].iter().enumerate() {
+                let lag = n - m;
+                for (j, &p) in past.pressure.iter().enumerate() {
+                    if p != 0.0 {
+                        w += run.dr * p * (step_u(i, j, lag + 1) - step_u(i, j, lag));
+                    }
+                }
+            }
+            let gap = w - st.h;
+            if touching {
+                assert!(
+                    gap.abs() < 1e-9 * st.h.abs().max(1e-6),
+                    "step {n}, ring {i}: gap {gap:e}"
+                );
+            } else {
+                assert!(
+                    gap > -1e-9 * st.h.abs().max(1e-6),
+                    "step {n}, ring {i} penetrated: {gap:e}"
+                );
+            }
+        }
+    }
+    eprintln!(
+        "light punch: {} steps, {holes} with the middle off, separation {:?}",
+        steps.len(),
+        run.separations
+    );
+    assert!(holes > 0);
+    let sep = run.separations[0];
+    assert!(sep < 1.5, "{sep}");
+}
+
 /// A cone driven at constant speed is self-similar: its force grows like t^2.
 #[test]
 fn a_driven_cone_is_self_similar() {
@@ -350,8 +437,8 @@ fn a_driven_cone_is_self_similar() {
 }
 
 /// Energy balance: kinetic energy plus the work on the half-space stay the impact energy to
-/// 1e-4 over a whole impact under Signorini's conditions (the kinematic law's tied edge ring
-/// is not held to the striker, and its audit is reported, `docs/axisymmetric.md`, section 6).
+/// 1e-4 over a whole impact under Signorini's conditions (the kinematic law's edge exchanges
+/// energy with the half-space, the next tests).
 #[test]
 fn the_energy_balance_closes() {
     for (v0, end, law) in [
@@ -376,6 +463,93 @@ fn the_energy_balance_closes() {
             r.radiated_fraction.value
         );
     }
+}
+
+/// The energy the kinematic law's edge releases, quasi-statically, over E0: the geometric
+/// contact radius a of the sphere at penetration h_g(a) = R - (R^2 - a^2)^(1/2) carries the
+/// pressure of the contact without edge stress for a (Sneddon's sphere, approach
+/// d0(a) = (a/2) ln((R + a)/(R - a))) plus a flat punch's of depth h_g - d0 < 0, whose
+/// edge's energy release rate is E* (h_g - d0)^2/(2 pi a) (the adhesive contact's). Integrated
+/// over the contact area, E* Int_0^a (h_g - d0)^2 da'.
+fn kinematic_edge_release(a: f64, v0: f64) -> f64 {
+    let nu = 0.25;
+    let estar = 2.0 / (1.0 - nu);
+    let m2 = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));
+    let e0 = 0.5 * OWN_DENSITY / m2 * v0 * v0;
+    let n = 4000;
+    let mut sum = 0.0;
+    for k in 0..n {
+        let x = (k as f64 + 0.5) / n as f64 * a;
+        let hg = 1.0 - (1.0 - x * x).sqrt();
+        let d0 = 0.5 * x * ((1.0 + x) / (1.0 - x)).ln();
+        sum += estar * (hg - d0).powi(2) * a / n as f64;
+    }
+    sum / e0
+}
+
+/// The kinematic law's energy audit is its edge's energy (`docs/axisymmetric.md`, section
+/// 6): while the geometric contact grows, kinetic energy plus the work on the half-space
+/// exceed the impact energy by the energy an adhesive edge of that pull releases, seven
+/// tenths of the impact energy at the largest contact of this slow impact. The march follows
+/// that closed form within 0.05 of the impact energy at its default grid.
+#[test]
+fn the_kinematic_edge_releases_an_adhesive_contacts_energy() {
+    let v0 = 1e-3;
+    let sol = solve(&sphere(v0, 40.0, EdgeLaw::Kinematic));
+    let rows = sol.history().0;
+    let top = rows
+        .iter()
+        .enumerate()
+        .max_by(|x, y| x.1.a.value.total_cmp(&y.1.a.value))
+        .unwrap()
+        .0;
+    let mut worst = 0.0f64;
+    for r in &rows[..=top] {
+        let release = kinematic_edge_release(r.a.value, v0);
+        let d = r.energy_defect.unwrap() - release;
+        worst = worst.max(d.abs());
+    }
+    let peak_release = kinematic_edge_release(rows[top].a.value, v0);
+    eprintln!("kinematic, V0/c1 = 1e-3: release at the largest contact {peak_release:.4}, largest difference of the defect from it {worst:.3e}");
+    assert!(peak_release > 0.6, "{peak_release}");
+    assert!(worst < 0.05, "{worst}");
+}
+
+/// What the kinematic edge released it takes back as the contact shrinks (the quasi-static
+/// release is reversible): the defect left at the separation goes to zero with the ring
+/// width (0.14 at the default grid, 0.05 at half of it, V0/c1 = 1e-2), and the growing
+/// contact follows the release closer on the finer grid.
+#[test]
+#[ignore = "two kinematic runs, one at half the default ring width: about 40 s"]
+fn the_kinematic_edge_gives_its_energy_back() {
+    let v0 = 1e-2;
+    let mut ends = Vec::new();
+    for halve in [false, true] {
+        let mut c = sphere(v0, 20.0, EdgeLaw::Kinematic);
+        c.levels = 1;
+        if halve {
+            c.dr = Some(0.5 * c.default_dr());
+        }
+        let sol = solve(&c);
+        let rows = sol.history().0;
+        let end = rows.last().unwrap().energy_defect.unwrap();
+        let top = rows
+            .iter()
+            .enumerate()
+            .max_by(|x, y| x.1.a.value.total_cmp(&y.1.a.value))
+            .unwrap()
+            .0;
+        let worst = rows[..=top]
+            .iter()
+            .map(|r| (r.energy_defect.unwrap() - kinematic_edge_release(r.a.value, v0)).abs())
+            .fold(0.0, f64::max);
+        eprintln!("dr = {:.5}: defect at the separation {end:.4}, growing contact against the release {worst:.3e}", c.finest_dr());
+        assert!(sol.rebound().is_ok());
+        assert!(worst < 0.05, "{worst}");
+        ends.push(end);
+    }
+    assert!(ends[1].abs() < 0.5 * ends[0].abs(), "{ends:?}");
+    assert!(ends[1].abs() < 0.08, "{ends:?}");
 }
 
 #[test]
