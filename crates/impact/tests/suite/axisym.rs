@@ -111,8 +111,8 @@ const HERTZ_DURATION: f64 = 2.943_275_184_324_705;
 
 /// The sphere's own quasi-static impact (no waves) against Hertz's, which takes the sphere
 /// for its paraboloid: Sneddon's contact of the sphere, approach
-/// d(a) = (a/2) ln((R + a)/(R - a)) and force F(a) = (E*/2)((a^2 + R^2) ln((R + a)/(R - a))
-/// - 2 a R), to the contact radius where Int F dd has taken the impact energy. Returns the
+/// d(a) = (a/2) ln((R + a)/(R - a)) and force
+/// F(a) = (E*/2)((a^2 + R^2) ln((R + a)/(R - a)) - 2 a R), to the contact radius where Int F dd has taken the impact energy. Returns the
 /// relative difference of the peak force from Hertz's (R = 1).
 fn sphere_quasi_static(nu: f64, mass: f64, v0: f64) -> f64 {
     let m2 = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));
