@@ -25,6 +25,10 @@ use crate::report::Printed;
 /// f64.
 pub const RUN_MAX_DIGITS: u32 = 30;
 
+/// Poisson's ratio of `impact run` when no material is given: 1/4, Poisson's solid
+/// (c1/c2 = 3^(1/2)), the usual reference of Lamb's problem.
+pub const DEFAULT_POISSON: f64 = 0.25;
+
 type R<T> = std::result::Result<T, Error>;
 
 /// The inputs of an impact run, named as the command line's flags (`impact run --help`).
@@ -125,7 +129,7 @@ impl RunInput {
     /// The case these inputs describe (checked by the engine when it is solved).
     pub fn case(&self) -> R<ImpactCase> {
         self.check_missing()?;
-        let nu = spec::poisson(self.c1, self.c2, self.poisson)?;
+        let nu = self.nu()?;
         let c1 = match (self.c1, self.c2, self.poisson) {
             (Some(c1), Some(_), None) => Some(c1),
             _ => None,
@@ -173,12 +177,18 @@ impl RunInput {
         Ok((end, stop, drive))
     }
 
+    /// Poisson's ratio of the run: from `--poisson` or `--c1`, `--c2`, and
+    /// [`DEFAULT_POISSON`] when neither is given.
+    fn nu(&self) -> R<f64> {
+        match (self.c1, self.c2, self.poisson) {
+            (None, None, None) => Ok(DEFAULT_POISSON),
+            (c1, c2, nu) => Ok(spec::poisson(c1, c2, nu)?),
+        }
+    }
+
     /// Every input missing, named in one error (the first one's parameter).
     fn check_missing(&self) -> R<()> {
         let mut missing: Vec<(&'static str, &str)> = Vec::new();
-        if self.c1.is_none() && self.c2.is_none() && self.poisson.is_none() {
-            missing.push(("poisson", "--poisson (or --c1 and --c2)"));
-        }
         if self.profile.is_empty() {
             missing.push(("profile", "--profile"));
         }
@@ -255,7 +265,7 @@ impl RunInput {
     /// and `--edge-cell` refused with the reason.
     pub fn axi_case(&self) -> R<impact::axisym::AxiCase> {
         self.check_missing()?;
-        let nu = spec::poisson(self.c1, self.c2, self.poisson)?;
+        let nu = self.nu()?;
         if self.striker != "rigid" {
             return Err(InputError::new(
                 "striker",

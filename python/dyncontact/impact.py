@@ -3,7 +3,7 @@ on an elastic half-plane (plane strain, the impact paper): the ``impact`` comman
 Python calls.
 
 Conventions (as ``impact --help``): the half-plane's ``c1``, ``c2`` in m/s or its
-``poisson``; lengths over the striker's scale R, times as c1 t/R, speeds over c1, the force
+``poisson`` (for ``run``, Poisson's solid, 1/4, when none is given); lengths over the striker's scale R, times as c1 t/R, speeds over c1, the force
 over rho c1^2 R, energies over rho c1^2 R^2, pressures over rho c1^2. ``striker``:
 ``"rigid"``, ``"elastic:c1=..,c2=..,density_ratio=.."``,
 ``"cylinder:c1=..,c2=..,density_ratio=.."`` (the full elastic cylinder, its mass its own) or

@@ -32,7 +32,9 @@ pub enum Command {
     /// half-plane model), a full elastic cylinder or a thin cylindrical shell, free or
     /// driven: histories of the
     /// penetration, the contact half-width, the force, energies and pressure profiles, the
-    /// rebound, each with an error estimate from grid refinement.
+    /// rebound, each with an error estimate from grid refinement (`--geometry axisymmetric`:
+    /// a body of revolution on the half-space). Without --poisson or --c1 and --c2 the
+    /// material is Poisson's solid, nu = 1/4.
     Run(RunArgs),
     /// The power law p ~ d^lambda of the contact pressure at a contact edge moving at speed
     /// D, for each speed range and edge law (docs/edge.md).

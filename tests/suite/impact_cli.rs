@@ -1206,8 +1206,8 @@ fn striker_green_prints_the_cylinder_response_with_its_keys() {
     }
 }
 
-/// `impact run --geometry axisymmetric`: the sphere on the half-space, the command
-/// line, its keys with their estimates, Hertz beside it; and its refusals, one line each.
+/// `impact run --geometry axisymmetric`: the sphere on the half-space, the documented command
+/// line (no material flag: Poisson's solid), its keys with their estimates, Hertz beside it; and its refusals, one line each.
 #[test]
 fn run_axisymmetric_reports_the_sphere_and_refuses_what_does_not_apply() {
     let v = json(&[
@@ -1224,11 +1224,11 @@ fn run_axisymmetric_reports_the_sphere_and_refuses_what_does_not_apply() {
         "signorini",
         "--end",
         "c1t/R=14",
-        "--poisson",
-        "0.25",
         "--json",
     ]);
     assert_eq!(v["geometry"], "axisymmetric");
+    // no material given: Poisson's solid
+    assert_eq!(num(&v["poisson"]), 0.25);
     let n = v["c1t_over_R"].as_array().unwrap().len();
     for k in [
         "h_over_R",
