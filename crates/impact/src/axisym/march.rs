@@ -187,16 +187,26 @@ impl<'a> AxiMarch<'a> {
         };
         let nr = self.rings();
         let reach = self.profile.contact_radius(h_pred.max(h0));
-        let mut k = (((reach / self.dr) + 0.5).ceil() as usize + MARGIN_RINGS).max(2);
         let prev_c = self.steps.last().map_or(0, |s| s.pressure.len());
-        k = k.max(prev_c + MARGIN_RINGS);
-        if k > nr {
-            return Err(ImpactError::Grid {
-                name: "dr",
-                reason: format!(
-                    "the contact reached the {nr} rings the march was sized for at c1 t/R = {t:.4}"
-                ),
-            });
+        let geometric = (((reach / self.dr) + 0.5).ceil() as usize + MARGIN_RINGS)
+            .max(2)
+            .max(prev_c + MARGIN_RINGS);
+        // the kinematic contact is the geometric one; Signorini's lies well inside it (the
+        // geometric radius is 2^(1/2) Hertz's for the paraboloid, pi/2 Sneddon's for the
+        // cone), so it may take fewer rings than that, as long as it keeps MARGIN_RINGS
+        // evaluated rings beyond its last one (checked below)
+        let k = match self.law {
+            EdgeLaw::Signorini => geometric.min(nr),
+            EdgeLaw::Kinematic => geometric,
+        };
+        let outgrown = || ImpactError::Grid {
+            name: "dr",
+            reason: format!(
+                "the contact reached the {nr} rings the march was sized for at c1 t/R = {t:.4}"
+            ),
+        };
+        if k > nr || prev_c + MARGIN_RINGS > k {
+            return Err(outgrown());
         }
         let hist = self.history(n, k);
         let mass = self.mass;
@@ -233,6 +243,9 @@ impl<'a> AxiMarch<'a> {
             }
             EdgeLaw::Signorini => self.active_set(prev_c, max_rings, &hist, h_pred, t)?,
         };
+        if k < geometric && p.len() + MARGIN_RINGS > k {
+            return Err(outgrown());
+        }
         let h = h_of(force);
         let v = match (self.mass, self.drive.driven_h(t)) {
             (Some(m), _) => v0 - dt * force / m,
