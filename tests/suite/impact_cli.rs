@@ -1303,6 +1303,24 @@ fn run_axisymmetric_reports_the_sphere_and_refuses_what_does_not_apply() {
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(word), "{word}: {err}");
     }
+    // a punch too light for the step (it would bounce back from step to step, a restitution
+    // of (r - 1)/(r + 1) = 0.98 at r = 105) is refused, naming the ring width
+    let (code, _, err) = impact(&[
+        "run",
+        "--geometry",
+        "axisymmetric",
+        "--profile",
+        "flat:a=1",
+        "--mass-ratio",
+        "1e-3",
+        "--v0-over-c1",
+        "0.01",
+        "--end",
+        "separation",
+    ]);
+    assert_eq!(code, 2);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("dr") && err.contains("deceleration"), "{err}");
     // and the plane run refuses the rings' width
     let (code, _, err) = impact(&[
         "run",

@@ -358,6 +358,7 @@ impl AxiCase {
                 }
                 if q == 0 {
                     end_steps_c = stop_at / ratio;
+                    self.check_stiffness(&mar.steps, mar.dt)?;
                 }
                 runs.push(AxiRun {
                     dr,
@@ -376,6 +377,33 @@ impl AxiCase {
             runs,
             coefficient_error: tables.largest_error(),
         })
+    }
+}
+
+impl AxiCase {
+    /// Refuses a free striker too light for the finest step (`docs/axisymmetric.md`,
+    /// section 3; the plane march's check, `docs/impact.md` section 9): against the plane-wave
+    /// impedance rho c1 pi a^2 of its widest contact the striker's speed relaxes in
+    /// tau = m/(rho c1 pi a^2), and a step's constant force advances it by the factor
+    /// (1 - r)/(1 + r), r = dt/(2 tau) = c1 dt pi a^2/(2 R^3 m/(rho R^3)), which is negative
+    /// above r = 1: the striker would bounce back from one step to the next.
+    fn check_stiffness(&self, steps: &[march::AxiStep], dt: f64) -> Result<()> {
+        let Drive::Free { mass_ratio, .. } = self.drive else {
+            return Ok(());
+        };
+        let a = steps.iter().map(|s| s.a).fold(0.0, f64::max);
+        let r = dt * std::f64::consts::PI * a * a / (2.0 * mass_ratio);
+        if r > crate::solve::STIFF_RATIO {
+            let tau = dt / (2.0 * r);
+            return Err(ImpactError::Grid {
+                name: "dr",
+                reason: format!(
+                    "the striker's deceleration time m/(rho c1 pi a^2) = {tau:.3e} R/c1 at its widest contact a/R = {a:.4} is shorter than half the time step c1 dt/R = {dt:.3e}, so the step's constant force would bounce it back: lower --dr or --kappa to c1 dt/R < {:.3e}, or raise --mass-ratio",
+                    2.0 * tau
+                ),
+            });
+        }
+        Ok(())
     }
 }
 
