@@ -275,6 +275,9 @@ impl AxiReport {
             );
         }
         col("work_over_rho_c1sq_Rcu", each(&|r| Some(&r.work)));
+        if free {
+            col("energy_defect", each(&|r| r.energy_defect.as_ref()));
+        }
         if rows.iter().all(|r| r.radiated_fraction.is_some()) {
             col(
                 RADIATED_ENERGY_FRACTION,
@@ -336,8 +339,8 @@ impl AxiReport {
         let energy_audit = free.then(|| {
             let largest = rows
                 .iter()
-                .filter_map(|r| r.energy_defect)
-                .fold(0.0f64, |a, d| a.max(d.abs()));
+                .filter_map(|r| r.energy_defect.as_ref())
+                .fold(0.0f64, |a, d| a.max(d.value.abs()));
             EnergyAudit {
                 largest_defect: largest,
                 bound: ENERGY_DEFECT_BOUND,

@@ -1238,11 +1238,21 @@ fn run_axisymmetric_reports_the_sphere_and_refuses_what_does_not_apply() {
         "kinetic_energy_over_rho_c1sq_Rcu",
         "work_over_rho_c1sq_Rcu",
         "radiated_energy_fraction",
+        "energy_defect",
     ] {
         assert_eq!(v[k].as_array().unwrap().len(), n, "{k}");
         assert_eq!(v["error_estimate"][k].as_array().unwrap().len(), n, "{k}");
     }
     assert_eq!(v["stage"].as_array().unwrap().len(), n);
+    // Signorini's energy defect is its own error: every estimate covers the defect
+    for (d, e) in v["energy_defect"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(v["error_estimate"]["energy_defect"].as_array().unwrap())
+    {
+        assert!(e.as_f64().unwrap() >= d.as_f64().unwrap().abs());
+    }
     // the default grid puts about 30 rings across the largest contact radius
     let rings = v["resolution"]["largest_contact_rings"].as_u64().unwrap();
     assert!((25..=45).contains(&rings), "{rings}");

@@ -97,7 +97,7 @@ pub struct AxiRow {
     /// `None` for a driven striker before it has done work.
     pub radiated_fraction: Option<AxiValue>,
     /// (kinetic + work)/impact energy - 1 (free striker).
-    pub energy_defect: Option<f64>,
+    pub energy_defect: Option<AxiValue>,
 }
 
 /// The rebound of a free striker.
@@ -462,7 +462,7 @@ impl SolvedAxi {
                 Box::new(move |s: &[AxiStep], i: usize| (s[i].work - s[i].quasi_static) * m2),
             ),
         ];
-        if let Some(_e) = e0 {
+        if let Some(e0_value) = e0 {
             let mass = match self.case.drive {
                 Drive::Free { mass_ratio, .. } => mass_ratio / m2,
                 _ => 0.0,
@@ -470,6 +470,14 @@ impl SolvedAxi {
             quantities.push((
                 "kinetic",
                 Box::new(move |s: &[AxiStep], i: usize| 0.5 * mass * s[i].v * s[i].v * m2),
+            ));
+            // (kinetic energy + work)/E0 - 1 on each level
+            let e0m = e0_value * m2;
+            quantities.push((
+                "energy_defect",
+                Box::new(move |s: &[AxiStep], i: usize| {
+                    (0.5 * mass * s[i].v * s[i].v * m2 + s[i].work * m2) / e0m - 1.0
+                }),
             ));
         }
         let mut values: Vec<Vec<Vec<f64>>> = Vec::new();
@@ -531,10 +539,16 @@ impl SolvedAxi {
                     Some(e) => Some(val(5, k, 1.0 / e)),
                     None => (work.value > 0.0).then(|| val(5, k, 1.0 / work.value)),
                 };
-                let energy_defect = match (e0_scaled, &kinetic) {
-                    (Some(e), Some(kin)) => Some((kin.value + work.value) / e - 1.0),
-                    _ => None,
-                };
+                // under Signorini's law the defect's exact value is 0, so the defect is its
+                // own error too (docs/impact.md, section 9); the kinematic law's edge
+                // exchanges energy (docs/axisymmetric.md, section 6): the levels' estimate
+                let energy_defect = e0.map(|_| {
+                    let mut d = val(7, k, 1.0);
+                    if self.case.law == EdgeLaw::Signorini {
+                        d.error = Some(d.error.unwrap_or(0.0).max(d.value.abs()));
+                    }
+                    d
+                });
                 AxiRow {
                     t,
                     h: val(0, k, 1.0),
