@@ -224,7 +224,10 @@ impl AxiReport {
     pub fn of(sol: &SolvedAxi, version: &str, pressure_at: &[f64]) -> Result<Self, String> {
         let (rows, orders) = sol.history();
         let levels = sol.runs.len();
-        let mut why: Vec<(String, String)> = Vec::new();
+        let mut why: Vec<(String, String)> = vec![(
+            "adot_over_c1".into(),
+            super::impact::EDGE_SPEED_WITHOUT_ESTIMATE.into(),
+        )];
         if levels < 2 {
             why.push((
                 "error_estimate".into(),

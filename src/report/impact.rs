@@ -56,6 +56,9 @@ pub mod keys {
     pub const ERR_H_OVER_R: &str = "err_h_over_R";
 }
 
+/// Why the edge's speed (`bdot_over_c1`, `adot_over_c1`) carries no estimate.
+pub const EDGE_SPEED_WITHOUT_ESTIMATE: &str = "the edge's speed carries no error estimate: it is the centred difference of the finest grid's edge over one report interval either side, and names the stage";
+
 /// The bound of |energy_defect| above which a run's energy audit is flagged.
 pub const ENERGY_DEFECT_BOUND: f64 = 1e-2;
 
@@ -355,7 +358,10 @@ impl RunReport {
         let (rows, orders) = sol.history();
         let driven = !matches!(sol.case.drive, Drive::Free { .. });
         let levels = sol.runs.len();
-        let mut why: Vec<(String, String)> = Vec::new();
+        let mut why: Vec<(String, String)> = vec![(
+            keys::BDOT_OVER_C1.into(),
+            EDGE_SPEED_WITHOUT_ESTIMATE.into(),
+        )];
         if levels < 2 {
             why.push((
                 "error_estimate".into(),

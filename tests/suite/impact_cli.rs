@@ -1229,6 +1229,9 @@ fn run_axisymmetric_reports_the_sphere_and_refuses_what_does_not_apply() {
     assert_eq!(v["geometry"], "axisymmetric");
     // no material given: Poisson's solid
     assert_eq!(num(&v["poisson"]), 0.25);
+    // the edge's speed names the stage, without an estimate: declared
+    assert!(v["unavailable"]["adot_over_c1"].is_string());
+    assert!(v["error_estimate"].get("adot_over_c1").is_none());
     let n = v["c1t_over_R"].as_array().unwrap().len();
     for k in [
         "h_over_R",
