@@ -2,6 +2,8 @@
 //! width dr, steps of dt = kappa dr/c1, the pressure constant on each ring over each step,
 //! the contact condition on each contact ring's mean displacement at the end of each step.
 
+use std::cell::RefCell;
+use std::collections::hash_map::Entry;
 use std::collections::HashMap;
 
 use super::profile::AxiProfile;
@@ -49,7 +51,8 @@ pub(crate) struct AxiMarch<'a> {
     area: Vec<f64>,
     /// The profile's ring means (None: no striker surface over the ring).
     fbar: Vec<Option<f64>>,
-    factors: HashMap<usize, Factor>,
+    /// The kept factorisations of the disks 0..c - 1, by c.
+    factors: RefCell<HashMap<usize, Factor>>,
     pub(crate) steps: Vec<AxiStep>,
     /// The mean displacements of the last step, rings 0..len.
     last_w: Vec<f64>,
@@ -91,7 +94,7 @@ impl<'a> AxiMarch<'a> {
             tables,
             area,
             fbar,
-            factors: HashMap::new(),
+            factors: RefCell::new(HashMap::new()),
             steps: Vec::new(),
             last_w: Vec::new(),
             separations: Vec::new(),
@@ -139,37 +142,71 @@ impl<'a> AxiMarch<'a> {
 
     /// The current step's contribution to ring i's displacement.
     fn current(&self, i: usize, p: &[f64]) -> f64 {
-        ring_current(self.tables, self.dr, i, p)
+        let nr = self.rings();
+        let block = self.tables.block(0).unwrap_or(&[]);
+        let row = &block[i * nr..i * nr + p.len()];
+        self.dr * row.iter().zip(p).map(|(c, q)| c * q).sum::<f64>()
     }
 
-    /// Solves the contact system on rings 0..c: (pressures, force).
-    fn solve(&mut self, c: usize, rhs: &[f64], t: f64) -> Result<(Vec<f64>, f64)> {
-        if !self.factors.contains_key(&c) {
-            let gamma = self.mass.map_or(0.0, |m| self.dt * self.dt / (2.0 * m));
-            let nr = self.rings();
-            let block = self.tables.block(0).unwrap_or(&[]);
-            let dr = self.dr;
-            let f = Factor::new(
-                c,
-                None,
-                |i, j| dr * block[i * nr + j],
-                gamma,
-                self.area[..c].to_vec(),
-            )
-            .ok_or_else(|| ImpactError::Step {
-                time: format!("{t:.6}"),
-                reason: format!("the contact system of {c} rings is singular"),
-            })?;
-            self.factors.insert(c, f);
+    /// The step's contact system on the rings `rings` (ascending), M = dr C + gamma 1 A^T
+    /// (C the current step's ring coefficients, A the rings' areas).
+    fn factor(&self, rings: &[usize], t: f64) -> Result<Factor> {
+        let gamma = self.mass.map_or(0.0, |m| self.dt * self.dt / (2.0 * m));
+        let nr = self.rings();
+        let block = self.tables.block(0).unwrap_or(&[]);
+        let dr = self.dr;
+        Factor::new(
+            rings.len(),
+            None,
+            |i, j| dr * block[rings[i] * nr + rings[j]],
+            gamma,
+            rings.iter().map(|&j| self.area[j]).collect(),
+        )
+        .ok_or_else(|| ImpactError::Step {
+            time: format!("{t:.6}"),
+            reason: format!("the contact system of {} rings is singular", rings.len()),
+        })
+    }
+
+    /// Solves the step with the contact rings `rings` (ascending) for the right-hand side
+    /// `rhs` (one entry a contact ring): the pressures up to the last contact ring (zeros
+    /// off the contact) and the force. A disk 0..c - 1 takes the kept factorisation; any
+    /// other set is factorised here.
+    fn solve_rings(&self, rings: &[usize], rhs: &[f64], t: f64) -> Result<(Vec<f64>, f64)> {
+        let Some(&last) = rings.last() else {
+            return Ok((Vec::new(), 0.0));
+        };
+        let disk = rings.len() == last + 1;
+        let fresh;
+        let mut kept = self.factors.borrow_mut();
+        let f: &Factor = if disk {
+            match kept.entry(rings.len()) {
+                Entry::Occupied(e) => e.into_mut(),
+                Entry::Vacant(e) => e.insert(self.factor(rings, t)?),
+            }
+        } else {
+            fresh = self.factor(rings, t)?;
+            &fresh
+        };
+        let pc = f.solve(rhs).ok_or_else(|| ImpactError::Step {
+            time: format!("{t:.6}"),
+            reason: "the contact system's solution is not finite".into(),
+        })?;
+        let mut p = vec![0.0; last + 1];
+        for (&i, &v) in rings.iter().zip(&pc) {
+            p[i] = v;
         }
-        let p = self.factors[&c]
-            .solve(rhs)
-            .ok_or_else(|| ImpactError::Step {
-                time: format!("{t:.6}"),
-                reason: "the contact system's solution is not finite".into(),
-            })?;
         let force = p.iter().zip(&self.area).map(|(q, a)| q * a).sum();
         Ok((p, force))
+    }
+
+    /// The penetration at the end of the step for the step's force: the predicted one less
+    /// the force's dt^2 F/(2 m) (free), or the prescribed one (driven).
+    fn penetration(&self, h_pred: f64, force: f64) -> f64 {
+        match self.mass {
+            Some(m) => h_pred - self.dt * self.dt * force / (2.0 * m),
+            None => h_pred,
+        }
     }
 
     /// Marches one step.
@@ -209,12 +246,7 @@ impl<'a> AxiMarch<'a> {
             return Err(outgrown());
         }
         let hist = self.history(n, k);
-        let mass = self.mass;
         let dt = self.dt;
-        let h_of = |force: f64| match mass {
-            Some(m) => h_pred - dt * dt * force / (2.0 * m),
-            None => h_pred,
-        };
         let max_rings = self.fbar.iter().take_while(|f| f.is_some()).count().min(k);
         let (p, force) = match self.law {
             EdgeLaw::Kinematic => {
@@ -231,7 +263,7 @@ impl<'a> AxiMarch<'a> {
                     // the step's system holds the force's coupling exactly; h moves the edge
                     // only by dt^2 F/(2 m) a step, which changes the tie's ratio negligibly
                     // unless the edge changes ring: iterate until it stays in its ring
-                    let h2 = h_of(sol.1);
+                    let h2 = self.penetration(h_pred, sol.1);
                     let same_ring = rings_within(self.profile.contact_radius(h2), self.dr)
                         == rings_within(a, self.dr);
                     h = h2;
@@ -246,7 +278,7 @@ impl<'a> AxiMarch<'a> {
         if k < geometric && p.len() + MARGIN_RINGS > k {
             return Err(outgrown());
         }
-        let h = h_of(force);
+        let h = self.penetration(h_pred, force);
         let v = match (self.mass, self.drive.driven_h(t)) {
             (Some(m), _) => v0 - dt * force / m,
             (None, Some(_)) => (h - h0) / dt,
@@ -346,7 +378,7 @@ impl<'a> AxiMarch<'a> {
     /// the part of ring c inside a and over ring c - 1 (area-weighted). Returns the
     /// pressures of rings 0..=c and the force.
     fn kinematic_solve(
-        &mut self,
+        &self,
         a: f64,
         lambda: f64,
         max_rings: usize,
@@ -365,7 +397,8 @@ impl<'a> AxiMarch<'a> {
             let rhs: Vec<f64> = (0..n)
                 .map(|i| h_pred - self.fbar[i].unwrap_or(0.0) - hist[i])
                 .collect();
-            return self.solve(n, &rhs, t);
+            let rings: Vec<usize> = (0..n).collect();
+            return self.solve_rings(&rings, &rhs, t);
         }
         // Int_{r1}^{r2} (a - r)^lambda r dr, u = a - r
         let moment = |r1: f64, r2: f64| -> f64 {
@@ -424,7 +457,7 @@ impl<'a> AxiMarch<'a> {
     /// off while its rim still pushes. Returns the pressures (zeros off the contact, up to
     /// its last ring) and the force.
     fn active_set(
-        &mut self,
+        &self,
         prev_c: usize,
         max_rings: usize,
         hist: &[f64],
@@ -434,76 +467,31 @@ impl<'a> AxiMarch<'a> {
         let Some(top) = max_rings.checked_sub(1) else {
             return Ok((Vec::new(), 0.0));
         };
-        let (mass, dt, dr, tables) = (self.mass, self.dt, self.dr, self.tables);
-        let fbar = self.fbar.clone();
         let settled = least_index_pivoting(
             top,
             prev_c.checked_sub(1),
-            |rings: &[usize]| self.solve_rings(rings, hist, h_pred, t),
+            |rings: &[usize]| {
+                let rhs: Vec<f64> = rings
+                    .iter()
+                    .map(|&i| h_pred - self.fbar[i].unwrap_or(0.0) - hist[i])
+                    .collect();
+                self.solve_rings(rings, &rhs, t)
+            },
             |(p, force): &(Vec<f64>, f64), i, inside| {
                 if inside {
                     return p[i] < 0.0;
                 }
                 // beyond the striker's surface the gap is open
-                let Some(f) = fbar[i] else {
+                let Some(f) = self.fbar[i] else {
                     return false;
                 };
-                let h = match mass {
-                    Some(m) => h_pred - dt * dt * force / (2.0 * m),
-                    None => h_pred,
-                };
-                h - f - hist[i] - ring_current(tables, dr, i, p) > 0.0
+                self.penetration(h_pred, *force) - f - hist[i] - self.current(i, p) > 0.0
             },
         )?;
         settled.map(|(_, s)| s).ok_or_else(|| ImpactError::Step {
             time: format!("{t:.6}"),
             reason: "the contact among whole rings did not settle (least-index pivoting)".into(),
         })
-    }
-
-    /// The step's solution with the contact rings `rings` (ascending): the pressures up to
-    /// the last contact ring (zeros off the contact) and the force. A disk 0..c - 1 takes the
-    /// kept factorisation; any other set is factorised here.
-    fn solve_rings(
-        &mut self,
-        rings: &[usize],
-        hist: &[f64],
-        h_pred: f64,
-        t: f64,
-    ) -> Result<(Vec<f64>, f64)> {
-        let Some(&last) = rings.last() else {
-            return Ok((Vec::new(), 0.0));
-        };
-        let rhs: Vec<f64> = rings
-            .iter()
-            .map(|&i| h_pred - self.fbar[i].unwrap_or(0.0) - hist[i])
-            .collect();
-        if rings.len() == last + 1 {
-            return self.solve(rings.len(), &rhs, t);
-        }
-        let gamma = self.mass.map_or(0.0, |m| self.dt * self.dt / (2.0 * m));
-        let nr = self.rings();
-        let block = self.tables.block(0).unwrap_or(&[]);
-        let dr = self.dr;
-        let singular = || ImpactError::Step {
-            time: format!("{t:.6}"),
-            reason: format!("the contact system of rings {rings:?} is singular"),
-        };
-        let f = Factor::new(
-            rings.len(),
-            None,
-            |i, j| dr * block[rings[i] * nr + rings[j]],
-            gamma,
-            rings.iter().map(|&j| self.area[j]).collect(),
-        )
-        .ok_or_else(singular)?;
-        let pc = f.solve(&rhs).ok_or_else(singular)?;
-        let mut p = vec![0.0; last + 1];
-        for (&i, &v) in rings.iter().zip(&pc) {
-            p[i] = v;
-        }
-        let force = p.iter().zip(&self.area).map(|(q, a)| q * a).sum();
-        Ok((p, force))
     }
 
     /// The reported contact radius: geometric under the kinematic law; under Signorini's the
@@ -532,15 +520,6 @@ impl<'a> AxiMarch<'a> {
             }
         }
     }
-}
-
-/// The displacement of ring i's mean at the end of a step due to that step's own ring
-/// pressures p (rings 0..p.len()).
-fn ring_current(tables: &RingTables, dr: f64, i: usize, p: &[f64]) -> f64 {
-    let nr = tables.rings();
-    let block = tables.block(0).unwrap_or(&[]);
-    let row = &block[i * nr..i * nr + p.len()];
-    dr * row.iter().zip(p).map(|(c, q)| c * q).sum::<f64>()
 }
 
 /// The rings whose centres lie within radius a (ring 0 as soon as a > 0).

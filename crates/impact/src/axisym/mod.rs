@@ -462,7 +462,7 @@ impl SolvedAxi {
                 Box::new(move |s: &[AxiStep], i: usize| (s[i].work - s[i].quasi_static) * m2),
             ),
         ];
-        if let Some(e0_value) = e0 {
+        if e0.is_some() {
             let mass = match self.case.drive {
                 Drive::Free { mass_ratio, .. } => mass_ratio / m2,
                 _ => 0.0,
@@ -470,14 +470,6 @@ impl SolvedAxi {
             quantities.push((
                 "kinetic",
                 Box::new(move |s: &[AxiStep], i: usize| 0.5 * mass * s[i].v * s[i].v * m2),
-            ));
-            // (kinetic energy + work)/E0 - 1 on each level
-            let e0m = e0_value * m2;
-            quantities.push((
-                "energy_defect",
-                Box::new(move |s: &[AxiStep], i: usize| {
-                    (0.5 * mass * s[i].v * s[i].v * m2 + s[i].work * m2) / e0m - 1.0
-                }),
             ));
         }
         let mut values: Vec<Vec<Vec<f64>>> = Vec::new();
@@ -493,6 +485,25 @@ impl SolvedAxi {
             }
             values.push(lv);
             ests.push(e);
+        }
+        // (kinetic energy + work)/E0 - 1 on each level, from the two (indices 6 and 4)
+        if let Some(e) = e0 {
+            let lv: Vec<Vec<f64>> = values[6]
+                .iter()
+                .zip(&values[4])
+                .map(|(kin, work)| {
+                    kin.iter()
+                        .zip(work)
+                        .map(|(k, w)| (k + w) / (e * m2) - 1.0)
+                        .collect()
+                })
+                .collect();
+            let (est, o) = windowed_estimates(&lv);
+            if let Some(o) = o {
+                orders.push(("energy_defect", o));
+            }
+            values.push(lv);
+            ests.push(est);
         }
         let val = |qi: usize, k: usize, scale: f64| AxiValue {
             value: values[qi][0][k] * scale,
