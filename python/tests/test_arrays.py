@@ -32,6 +32,15 @@ def test_arrays_are_owned_writable_float64():
     assert e.dtype == np.float64 and e.shape == h.shape and np.all(e >= 0)
 
 
+def test_the_error_model_of_each_estimated_history_is_stated():
+    a = dyncontact.impact.run(**RUN)
+    models = a.to_dict()["error_model"]
+    assert set(models) == set(a.to_dict()["error_estimate"]) & set(a.history_keys())
+    for key, m in models.items():
+        assert m["estimator"] in ("richardson", "conservative"), key
+        assert m["safety"] > 0 and m["conservative_rows"] >= 1, key
+
+
 def _finite(v, path=""):
     if isinstance(v, dict):
         for k, x in v.items():

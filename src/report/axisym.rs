@@ -50,6 +50,7 @@ pub const AXI_KEYS: &[&str] = &[
     "first_order_radiation",
     "error_estimate",
     "observed_order",
+    "error_model",
     "pressure",
     "unavailable",
 ];
@@ -570,6 +571,17 @@ impl AxiReport {
                 }),
             );
         }
+        // every history's estimates are the conservative bound
+        let models: serde_json::Map<String, Value> = errors
+            .iter()
+            .filter_map(|(k, v)| {
+                let rows = v.as_array()?.len();
+                Some((
+                    k.clone(),
+                    super::error_model_json(&impact::ErrorModel::conservative(rows)),
+                ))
+            })
+            .collect();
         o.insert("error_estimate".into(), Value::Object(errors));
         o.insert(
             "observed_order".into(),
@@ -580,6 +592,9 @@ impl AxiReport {
                     .collect(),
             ),
         );
+        if !models.is_empty() {
+            o.insert("error_model".into(), Value::Object(models));
+        }
         if let Some(list) = &self.pressure {
             o.insert(
                 "pressure".into(),

@@ -107,6 +107,7 @@ pub const RUN_KEYS: &[&str] = &[
     "resolution",
     "error_estimate",
     "observed_order",
+    "error_model",
     "edge_without_solution",
     "pressure",
     "unavailable",
@@ -313,6 +314,9 @@ pub struct RunReport {
     pub resolution: Resolution,
     /// The observed convergence orders (key, order).
     pub observed_order: Vec<(&'static str, f64)>,
+    /// How each estimated history's estimates were formed (key, model; `docs/impact.md`,
+    /// section 5).
+    pub error_model: Vec<(&'static str, impact::ErrorModel)>,
     /// Where a prescribed edge ran between c_R and c1.
     pub edge_without_solution: Vec<EdgeWithoutSolution>,
     /// The pressure profiles asked for.
@@ -443,6 +447,23 @@ impl RunReport {
                 "a driven striker has no impact energy to audit".into(),
             ));
         }
+        // the estimator of each estimated column
+        let error_model: Vec<(&'static str, impact::ErrorModel)> = match orders.models {
+            Some(m) => columns
+                .iter()
+                .filter(|c| c.errors.is_some())
+                .map(|c| {
+                    let model = match c.key {
+                        "h_over_R" => m.h,
+                        "b_over_R" => m.b,
+                        "force_over_rho_c1sq_R" => m.force,
+                        _ => m.others,
+                    };
+                    (c.key, model)
+                })
+                .collect(),
+            None => Vec::new(),
+        };
         // the observed orders: a negative order (the level differences grow) is no order
         let mut observed_order = Vec::new();
         for (key, o) in [
@@ -615,6 +636,7 @@ impl RunReport {
                 under_resolved: widest < MIN_CONTACT_CELLS,
             },
             observed_order,
+            error_model,
             edge_without_solution: sol
                 .edge_without_solution()
                 .into_iter()
@@ -789,6 +811,9 @@ impl RunReport {
             .map(|(k, p)| (k.to_string(), json!(p)))
             .collect();
         out.push(("observed_order", Value::Object(ords)));
+        if !self.error_model.is_empty() {
+            out.push(("error_model", Value::Object(self.error_model_json())));
+        }
         out.push((
             "edge_without_solution",
             Value::Array(
@@ -955,6 +980,15 @@ impl RunReport {
         json!({"force_over_rho_c1sq_R": p.force_over_rho_c1sq_r.json(), "c1t_over_R": p.c1t_over_r.json()})
     }
 
+    /// The `error_model` object: per estimated column its estimator, the safety factor, the
+    /// order credited and the rows that took the conservative bound.
+    fn error_model_json(&self) -> Map<String, Value> {
+        self.error_model
+            .iter()
+            .map(|(key, m)| (key.to_string(), super::error_model_json(m)))
+            .collect()
+    }
+
     /// The `error_estimate` object: per column an array, per rebound quantity a number
     fn errors_json(&self) -> Map<String, Value> {
         let mut errs = Map::new();
@@ -1022,6 +1056,18 @@ impl RunReport {
                     .unwrap_or_default();
                 s.push_str(&format!("# {key}: {x}{err}\n"));
             }
+        }
+        for (key, m) in &self.error_model {
+            let order = m
+                .order_credited
+                .map(|p| format!(", order credited {p:.3}"))
+                .unwrap_or_default();
+            s.push_str(&format!(
+                "# error_model: {key}: {} (safety {}{order}; conservative rows: {})\n",
+                m.estimator.name(),
+                m.safety,
+                m.conservative_rows
+            ));
         }
         for (key, reason) in &self.unavailable {
             s.push_str(&format!("# unavailable: {key}: {reason}\n"));

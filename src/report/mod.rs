@@ -241,3 +241,20 @@ impl<V> Entry<V> {
 pub fn print_floor(digits: usize, bits: u32) -> f64 {
     (0.5 * 10f64.powi(1 - digits as i32)).max(8.0 * 2f64.powi(-(bits as i32)))
 }
+
+/// One history's error model as JSON (`error_model.<key>` of an impact run, plane or
+/// axisymmetric): its `estimator`, `safety`, `order_credited` (when one is) and
+/// `conservative_rows`.
+pub(crate) fn error_model_json(m: &::impact::ErrorModel) -> serde_json::Value {
+    let mut o = serde_json::Map::new();
+    o.insert("estimator".into(), serde_json::json!(m.estimator.name()));
+    o.insert("safety".into(), serde_json::json!(m.safety));
+    if let Some(p) = m.order_credited {
+        o.insert("order_credited".into(), serde_json::json!(p));
+    }
+    o.insert(
+        "conservative_rows".into(),
+        serde_json::json!(m.conservative_rows),
+    );
+    serde_json::Value::Object(o)
+}

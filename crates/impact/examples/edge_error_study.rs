@@ -4,7 +4,7 @@
 //!   law) at each DX against one grid at REF, the largest error of b, h and the force over
 //!   c1 t/R in [0.5, 2), [2, 5), [5, 7.5), [7.5, 10) relative to each one's peak, b as
 //!   reported (`RAW=1`: the per-step edges interpolated to t_n; `KAPPA=K`: another time step;
-//!   `LAW=kinematic`: the kinematic law;
+//!   `LAW=kinematic`: the kinematic law; `WINDOWS=0.02:0.1,0.1:0.5`: other ranges;
 //!   `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and per step).
 //!
 //! The slowly driven parabola against Hertz's edge and the driven wedge's edge against the
@@ -48,14 +48,23 @@ fn main() {
         .filter_map(|n| rref.force_at(n + 1))
         .fold(0.0, f64::max);
     println!("ref dx {dref} ({tref:.2} s): b peak {bpk:.8}");
-    let windows = [(0.5, 2.0), (2.0, 5.0), (5.0, 7.5), (7.5, 10.0)];
+    let windows: Vec<(f64, f64)> = match std::env::var("WINDOWS") {
+        Ok(v) => v
+            .split(',')
+            .map(|w| {
+                let (lo, hi) = w.split_once(':').expect("LO:HI");
+                (lo.parse().expect("a number"), hi.parse().expect("a number"))
+            })
+            .collect(),
+        Err(_) => vec![(0.5, 2.0), (2.0, 5.0), (5.0, 7.5), (7.5, 10.0)],
+    };
     for a in &args[1..] {
         let dx: f64 = a.parse().unwrap();
         let (run, el) = single(dx);
         let ratio = (dx / dref).round() as usize;
-        let mut eb = [0.0f64; 4];
-        let mut eh = [0.0f64; 4];
-        let mut ef = [0.0f64; 4];
+        let mut eb = vec![0.0f64; windows.len()];
+        let mut eh = vec![0.0f64; windows.len()];
+        let mut ef = vec![0.0f64; windows.len()];
         for (n, s) in run.steps.iter().enumerate() {
             let m = (n + 1) * ratio - 1;
             let Some(r) = rref.steps.get(m) else { continue };
@@ -91,7 +100,17 @@ fn main() {
             }
             println!();
         }
-        println!("dx {dx} ({el:.2} s): b {:.2e} {:.2e} {:.2e} {:.2e} | h {:.2e} {:.2e} {:.2e} {:.2e} | F {:.2e} {:.2e} {:.2e} {:.2e}",
-            eb[0], eb[1], eb[2], eb[3], eh[0], eh[1], eh[2], eh[3], ef[0], ef[1], ef[2], ef[3]);
+        let row = |e: &[f64]| {
+            e.iter()
+                .map(|v| format!("{v:.2e}"))
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        println!(
+            "dx {dx} ({el:.2} s): b {} | h {} | F {}",
+            row(&eb),
+            row(&eh),
+            row(&ef)
+        );
     }
 }

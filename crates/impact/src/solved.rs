@@ -12,10 +12,97 @@ use crate::scalar::Scalar;
 use crate::striker::cylinder::DiskModes;
 use crate::striker::{shell_energies, Ring, Striker};
 
-/// The safety factor on the grids' differences in every error estimate of a history and a
-/// pressure profile (`docs/impact.md`, section 5): the contact set moves cell by cell, so the
-/// error is not smooth in dx.
+/// The safety factor on the grids' differences in the conservative error estimates of a
+/// history and a pressure profile (`docs/impact.md`, section 5): the contact set moves cell by
+/// cell, so the error is not smooth in dx.
 const ESTIMATE_SAFETY: f64 = 4.0;
+
+/// The report times either side of a row over which its level differences are taken (the
+/// contact set moves cell by cell, so one difference may happen to be small).
+const ESTIMATE_WINDOW: usize = 4;
+
+/// How the estimates of one history were formed (`docs/impact.md`, section 5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Estimator {
+    /// Richardson's estimate with the observed order credited up to a cap, times a safety
+    /// factor measured on the twelve-case sweep: the order is shown on three levels.
+    Richardson,
+    /// The conservative bound: four times the level differences, no order above one
+    /// credited (the order is not shown, or the quantity is outside the sweep).
+    Conservative,
+}
+
+impl Estimator {
+    /// `richardson` or `conservative`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Estimator::Richardson => "richardson",
+            Estimator::Conservative => "conservative",
+        }
+    }
+}
+
+/// The estimator of one history and what it credited ([`Orders::models`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ErrorModel {
+    /// The estimator of the rows.
+    pub estimator: Estimator,
+    /// The safety factor on the level differences.
+    pub safety: f64,
+    /// The order credited in the Richardson factor 1/(2^p - 1) (never above 1 for the
+    /// conservative bound, which credits no order above the first).
+    pub order_credited: Option<f64>,
+    /// The rows that took the conservative bound all the same: the last report time (the
+    /// edge's and the force's crossing fits are one-sided there) and the times while the
+    /// coarsest grid's contact spans less than one of its cells.
+    pub conservative_rows: usize,
+}
+
+impl ErrorModel {
+    /// The conservative bound on every one of `rows` rows, crediting no order (the
+    /// axisymmetric march's histories).
+    pub fn conservative(rows: usize) -> Self {
+        ErrorModel {
+            estimator: Estimator::Conservative,
+            safety: ESTIMATE_SAFETY,
+            order_credited: None,
+            conservative_rows: rows,
+        }
+    }
+}
+
+/// The sharp estimator's safety factor and order cap for one history (`docs/impact.md`,
+/// section 5): the smallest round factors that keep the ratio of the actual error to the
+/// stated one below 0.8 over the twelve-case sweep at dx = R/100 and R/200.
+#[derive(Clone, Copy, Debug)]
+struct SharpPolicy {
+    safety: f64,
+    order_cap: f64,
+}
+
+/// The policies of h, b and the force: b's error carries the edge's phase across the cell
+/// crossings, which the level differences follow only loosely, so no order above one is
+/// credited; h and the force are smooth.
+const SHARP_H: SharpPolicy = SharpPolicy {
+    safety: 2.0,
+    order_cap: 1.0,
+};
+const SHARP_B: SharpPolicy = SharpPolicy {
+    safety: 2.0,
+    order_cap: 1.0,
+};
+const SHARP_FORCE: SharpPolicy = SharpPolicy {
+    safety: 3.5,
+    order_cap: 2.0,
+};
+
+/// Richardson's factor 1/(2^p - 1) for the order p, never below 1 when p is at most one.
+fn richardson_factor(p: f64) -> f64 {
+    1.0 / (2f64.powf(p) - 1.0)
+}
+
+/// The lowest observed order at which the sharp estimator is used.
+const ORDER_SHOWN: f64 = 0.5;
 
 /// A pressure profile of the finest grid ([`SolvedImpact::pressure_profile`]).
 #[derive(Clone, Debug)]
@@ -131,7 +218,8 @@ pub struct Rebound<T = f64> {
     pub reimpacts: usize,
 }
 
-/// The observed convergence order of each quantity.
+/// The observed convergence order of each quantity, and how each history's estimates were
+/// formed.
 #[derive(Clone, Debug)]
 pub struct Orders {
     /// Order of h.
@@ -140,6 +228,22 @@ pub struct Orders {
     pub b: Option<f64>,
     /// Order of the force.
     pub force: Option<f64>,
+    /// The error model of h, b and the force, and of the other histories (the penetration
+    /// speed, the energies, the striker's deformation: conservative); `None` with one level.
+    pub models: Option<Models>,
+}
+
+/// The error models of the histories ([`Orders::models`]).
+#[derive(Clone, Copy, Debug)]
+pub struct Models {
+    /// h's.
+    pub h: ErrorModel,
+    /// b's.
+    pub b: ErrorModel,
+    /// The force's.
+    pub force: ErrorModel,
+    /// The other histories'.
+    pub others: ErrorModel,
 }
 
 /// A solved case, at the precision T.
@@ -387,31 +491,86 @@ impl<T: Scalar> SolvedImpact<T> {
                 order(&s[0][..nuse], &s[1][..nuse], &s[2][..nuse])
             })
             .collect();
+        // the rows that take the conservative bound whatever the model: the last report
+        // time (the crossing fits are one-sided there) and those while the coarsest grid's
+        // contact spans less than one of its cells
+        let coarsest = &self.runs[self.runs.len() - 1];
+        let conservative_row: Vec<bool> = (0..times.len())
+            .map(|i| {
+                i + 1 == times.len()
+                    || coarsest
+                        .edge_at(step_at(coarsest, i))
+                        .is_none_or(|b| b < coarsest.dx)
+            })
+            .collect();
+        // the sharp estimator of h, b and the force where three levels show an order
+        let sharp = |q: usize| -> Option<(SharpPolicy, f64)> {
+            let policy = match q {
+                0 => SHARP_H,
+                2 => SHARP_B,
+                3 => SHARP_FORCE,
+                _ => return None,
+            };
+            let p = ords[q].filter(|p| *p > ORDER_SHOWN)?;
+            Some((policy, p.min(policy.order_cap)))
+        };
         let est = |q: usize, i: usize| -> Option<f64> {
             if self.runs.len() < 2 {
                 return None;
             }
             // the level differences over the neighbouring report times, and the coarser
-            // pair scaled down by first order: the contact set moves cell by cell, so a
-            // difference may happen to be small at one time
+            // pair scaled down by the order credited
+            let credited = sharp(q).filter(|_| !conservative_row[i]);
+            let coarse_scale = credited.map_or(0.5, |(_, p)| 0.5f64.powf(p.max(1.0)));
             let mut d: f64 = 0.0;
-            for j in i.saturating_sub(4)..(i + 5).min(nuse.max(i + 1)) {
+            for j in
+                i.saturating_sub(ESTIMATE_WINDOW)..(i + ESTIMATE_WINDOW + 1).min(nuse.max(i + 1))
+            {
                 // the differences in T, then rounded
                 d = d.max((samples[q][0][j] - samples[q][1][j]).abs().to_f64());
                 if let Some(c) = samples[q].get(2) {
-                    d = d.max(0.5 * (samples[q][1][j] - c[j]).abs().to_f64());
+                    d = d.max(coarse_scale * (samples[q][1][j] - c[j]).abs().to_f64());
                 }
             }
             if !d.is_finite() {
                 return None;
             }
-            // Richardson with the observed order, never below the last difference
-            let factor = ords[q]
-                .filter(|p| *p > 0.0)
-                .map(|p| (1.0 / (2f64.powf(p) - 1.0)).max(1.0))
-                .unwrap_or(1.0);
-            Some(ESTIMATE_SAFETY * d * factor)
+            Some(match credited {
+                // Richardson with the observed order up to the cap
+                Some((policy, p)) => policy.safety * d * richardson_factor(p),
+                // the conservative bound: no order above one credited
+                None => {
+                    let factor = ords[q]
+                        .filter(|p| *p > 0.0)
+                        .map(|p| richardson_factor(p).max(1.0))
+                        .unwrap_or(1.0);
+                    ESTIMATE_SAFETY * d * factor
+                }
+            })
         };
+        let conservative_rows = conservative_row.iter().filter(|c| **c).count();
+        let model = |q: usize| -> ErrorModel {
+            match sharp(q) {
+                Some((policy, p)) => ErrorModel {
+                    estimator: Estimator::Richardson,
+                    safety: policy.safety,
+                    order_credited: Some(p),
+                    conservative_rows,
+                },
+                None => ErrorModel {
+                    estimator: Estimator::Conservative,
+                    safety: ESTIMATE_SAFETY,
+                    order_credited: ords[q].filter(|p| *p > 0.0).map(|p| p.min(1.0)),
+                    conservative_rows: times.len(),
+                },
+            }
+        };
+        let models = (self.runs.len() >= 2).then(|| Models {
+            h: model(0),
+            b: model(2),
+            force: model(3),
+            others: ErrorModel::conservative(times.len()),
+        });
         let mut rows = Vec::with_capacity(times.len());
         for (i, &t) in times.iter().enumerate() {
             let st = &fine.steps[step_at(fine, i) - 1];
@@ -504,6 +663,7 @@ impl<T: Scalar> SolvedImpact<T> {
                 h: ords[0],
                 b: ords[2],
                 force: ords[3],
+                models,
             },
         )
     }

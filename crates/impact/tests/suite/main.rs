@@ -9,6 +9,7 @@ mod bridge;
 mod cylinder;
 mod disk;
 mod edge_exponents;
+mod estimates;
 mod green;
 mod physics;
 mod precision;
