@@ -14,95 +14,9 @@
 //! stated error are written there as CSV.
 use std::io::Write;
 
-use impact::{Drive, EdgeLaw, HistoryRow, ImpactCase, Profile, Value};
+mod sweep;
 
-/// The sweep's cases: (name, case).
-fn cases() -> Vec<(&'static str, ImpactCase)> {
-    let free = |nu: f64, profile: Profile, mass: f64, v0: f64, law: EdgeLaw, end: f64| {
-        ImpactCase::new(
-            nu,
-            profile,
-            Drive::Free {
-                mass_ratio: mass,
-                v0_over_c1: v0,
-            },
-            law,
-            end,
-        )
-    };
-    let parabola = Profile::Parabola { radius: 1.0 };
-    let (sig, kin) = (EdgeLaw::Signorini, EdgeLaw::Kinematic);
-    vec![
-        ("reference", ImpactCase::reference(sig)),
-        ("reference kinematic", ImpactCase::reference(kin)),
-        (
-            "light fast nu .3",
-            free(0.3, parabola.clone(), 1.0, 0.1, sig, 3.2),
-        ),
-        (
-            "heavy slow nu .1",
-            free(0.1, parabola.clone(), 1000.0, 0.001, sig, 10.0),
-        ),
-        ("nu .45", free(0.45, parabola.clone(), 10.0, 0.01, sig, 8.0)),
-        (
-            "power k 3",
-            free(
-                0.25,
-                Profile::Power { a: 1.0, k: 3.0 },
-                10.0,
-                0.01,
-                sig,
-                6.0,
-            ),
-        ),
-        (
-            "circle M 100 V .05",
-            free(0.25, Profile::Circle { radius: 1.0 }, 100.0, 0.05, sig, 6.0),
-        ),
-        (
-            "wedge 80",
-            free(
-                0.25,
-                Profile::Wedge { theta_deg: 80.0 },
-                10.0,
-                0.01,
-                sig,
-                4.0,
-            ),
-        ),
-        (
-            "kinematic M 100 V .05",
-            free(0.25, parabola.clone(), 100.0, 0.05, kin, 6.0),
-        ),
-        (
-            "kinematic power k 3",
-            free(
-                0.2,
-                Profile::Power { a: 1.0, k: 3.0 },
-                30.0,
-                0.003,
-                kin,
-                8.0,
-            ),
-        ),
-        (
-            "slow M 300 nu .2",
-            free(0.2, parabola.clone(), 300.0, 0.003, sig, 10.0),
-        ),
-        (
-            "kinematic wedge 80",
-            free(0.3, Profile::Wedge { theta_deg: 80.0 }, 3.0, 0.03, kin, 3.2),
-        ),
-    ]
-}
-
-type Pick = fn(&HistoryRow) -> Value;
-const PICKS: [(&str, Pick); 3] = [("h", |r| r.h), ("b", |r| r.b), ("force", |r| r.force)];
-
-fn median(v: &mut [f64]) -> f64 {
-    v.sort_by(|a, b| a.total_cmp(b));
-    v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
-}
+use sweep::{cases, compare, median, PICKS};
 
 fn main() {
     let dx: f64 = std::env::args()
@@ -117,18 +31,7 @@ fn main() {
     let mut all: Vec<(Vec<f64>, Vec<f64>)> = vec![(Vec::new(), Vec::new()); PICKS.len()];
     println!("case                  quantity  max actual/stated  median actual/stated  median stated (rel)");
     for (name, base) in cases() {
-        let mut case = base.clone();
-        case.dx = dx;
-        let sol = case.solve(|_| {}).expect("the case solves");
-        let (rows, _) = sol.history();
-        let reference = |d: f64| {
-            let mut c = base.clone();
-            c.dx = d;
-            c.levels = 1;
-            c.solve(|_| {}).expect("the reference solves").history().0
-        };
-        let (r4, r2) = (reference(dx / 4.0), reference(dx / 2.0));
-        let find = |rs: &[HistoryRow], t: f64| rs.iter().find(|r| (r.t - t).abs() < 1e-9).cloned();
+        let (sol, _, compared) = compare(&base, dx);
         // each level's value at report row i (the levels share the report times)
         let dtr = sol.report_dt();
         let level_value = |l: usize, qi: usize, i: usize| -> f64 {
@@ -143,29 +46,23 @@ fn main() {
             let scale = if qi == 2 { sol.m * sol.m } else { 1.0 };
             v.map_or(f64::NAN, |v| v * scale)
         };
-        for (qi, (q, pick)) in PICKS.iter().enumerate() {
+        for (qi, (q, _)) in PICKS.iter().enumerate() {
             let (mut ratios, mut rel) = (Vec::new(), Vec::new());
-            for (i, r) in rows.iter().enumerate() {
-                let (Some(a), Some(b)) = (find(&r4, r.t), find(&r2, r.t)) else {
-                    continue;
-                };
-                let v = pick(r);
-                let Some(err) = v.error else { continue };
-                let (t4, t2) = (pick(&a).value, pick(&b).value);
+            for c in &compared {
+                let (value, stated, t4, t2) = c.q[qi];
+                let Some(err) = stated else { continue };
                 if let Some(f) = raw.as_mut() {
-                    let lv: Vec<f64> = (0..3).map(|l| level_value(l, qi, i)).collect();
+                    let lv: Vec<f64> = (0..3).map(|l| level_value(l, qi, c.i)).collect();
                     writeln!(
                         f,
                         "{name},{q},{},{},{},{},{err},{t4},{t2}",
-                        r.t, lv[0], lv[1], lv[2]
+                        c.t, lv[0], lv[1], lv[2]
                     )
                     .unwrap();
                 }
-                let own = (t4 - t2).abs();
-                let actual = (v.value - t4).abs();
-                ratios.push((actual + own) / err);
-                if v.value.abs() > 0.0 {
-                    rel.push(err / v.value.abs());
+                ratios.push(c.bound(qi) / err);
+                if value.abs() > 0.0 {
+                    rel.push(err / value.abs());
                 }
             }
             if ratios.is_empty() {

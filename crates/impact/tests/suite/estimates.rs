@@ -4,27 +4,12 @@
 //! finer. The actual error is bounded by the difference from that grid plus its own error (its
 //! difference from the grid twice finer than dx).
 
-use impact::{Drive, EdgeLaw, Estimator, HistoryRow, ImpactCase, Profile, Value};
+use impact::Estimator;
 
-fn free(nu: f64, profile: Profile, mass: f64, v0: f64, law: EdgeLaw, end: f64) -> ImpactCase {
-    ImpactCase::new(
-        nu,
-        profile,
-        Drive::Free {
-            mass_ratio: mass,
-            v0_over_c1: v0,
-        },
-        law,
-        end,
-    )
-}
+#[path = "../../examples/sweep/mod.rs"]
+mod sweep;
 
-fn median(v: &mut [f64]) -> f64 {
-    v.sort_by(|a, b| a.total_cmp(b));
-    v[v.len() / 2]
-}
-
-type Pick = fn(&HistoryRow) -> Value;
+use sweep::{cases, compare, median, PICKS};
 
 /// Every row of h, b and the force carries an estimate, the bound of the actual error never
 /// exceeds it, and the estimates are no more pessimistic than measured: over these shorter
@@ -33,117 +18,74 @@ type Pick = fn(&HistoryRow) -> Value;
 /// 0.04 and 0.05 (over the full sweep at R/100: 0.098, 0.058 and 0.126; the aim is 0.1).
 #[test]
 fn estimates_bound_the_actual_errors_and_are_sharp() {
-    let parabola = Profile::Parabola { radius: 1.0 };
-    let (sig, kin) = (EdgeLaw::Signorini, EdgeLaw::Kinematic);
-    let reference = |law| {
-        let mut c = ImpactCase::reference(law);
-        c.end = 4.0;
-        c
-    };
-    let cases = [
-        ("reference", reference(sig)),
-        ("reference kinematic", reference(kin)),
-        (
-            "light fast",
-            free(0.3, parabola.clone(), 1.0, 0.1, sig, 3.2),
-        ),
-        (
-            "circle",
-            free(0.25, Profile::Circle { radius: 1.0 }, 100.0, 0.05, sig, 2.4),
-        ),
-        (
-            "kinematic power",
-            free(
-                0.2,
-                Profile::Power { a: 1.0, k: 3.0 },
-                30.0,
-                0.003,
-                kin,
-                4.0,
-            ),
-        ),
-        (
-            "wedge",
-            free(
-                0.25,
-                Profile::Wedge { theta_deg: 80.0 },
-                10.0,
-                0.01,
-                sig,
-                2.0,
-            ),
-        ),
+    // the sweep's cases run here, and the ends they take
+    let shorter = [
+        ("reference", 4.0),
+        ("reference kinematic", 4.0),
+        ("light fast nu .3", 3.2),
+        ("circle M 100 V .05", 2.4),
+        ("kinematic power k 3", 4.0),
+        ("wedge 80", 2.0),
     ];
-    let picks: [(&str, Pick, f64); 3] = [
-        ("h", |r| r.h, 0.05),
-        ("b", |r| r.b, 0.04),
-        ("force", |r| r.force, 0.05),
-    ];
+    let least = [0.05, 0.04, 0.05];
     let dx = 0.01;
-    let mut ratios = vec![Vec::new(); picks.len()];
-    for (name, base) in cases {
-        let mut case = base.clone();
-        case.dx = dx;
-        let sol = case.solve(|_| {}).expect("the case solves");
-        let (rows, orders) = sol.history();
-        let models = orders.models.expect("three levels have error models");
+    let mut ratios = vec![Vec::new(); PICKS.len()];
+    let mut run = 0;
+    for (name, mut base) in cases() {
+        let Some(&(_, end)) = shorter.iter().find(|(n, _)| *n == name) else {
+            continue;
+        };
+        run += 1;
+        base.end = end;
+        let (sol, _, compared) = compare(&base, dx);
+        let models = sol
+            .history()
+            .1
+            .models
+            .expect("three levels have error models");
         for m in [models.h, models.b, models.force] {
             assert!(m.safety > 0.0 && m.conservative_rows >= 1, "{name}: {m:?}");
         }
         assert_eq!(models.others.estimator, Estimator::Conservative);
-        let reference = |d: f64| {
-            let mut c = base.clone();
-            c.dx = d;
-            c.levels = 1;
-            c.solve(|_| {}).expect("the reference solves").history().0
-        };
-        let (r4, r2) = (reference(dx / 4.0), reference(dx / 2.0));
-        let find = |rs: &[HistoryRow], t: f64| rs.iter().find(|r| (r.t - t).abs() < 1e-9).cloned();
-        let mut compared = 0;
-        for r in &rows {
-            let (Some(a), Some(b)) = (find(&r4, r.t), find(&r2, r.t)) else {
-                continue;
-            };
-            compared += 1;
-            if std::env::var("ROWS").is_ok() {
-                eprintln!("{name} {}", r.t);
-            }
-            for (q, (key, pick, _)) in picks.iter().enumerate() {
-                let v = pick(r);
-                let err = v.error.expect("every row carries an estimate");
+        assert!(
+            compared.len() >= 20,
+            "{name}: {} rows compared",
+            compared.len()
+        );
+        let mut line = format!("{name}:");
+        for (q, (key, _)) in PICKS.iter().enumerate() {
+            let mut own = Vec::new();
+            for c in &compared {
+                let err = c.q[q].1.expect("every row carries an estimate");
                 assert!(
                     err.is_finite() && err > 0.0,
                     "{name} {key} at {}: {err}",
-                    r.t
+                    c.t
                 );
-                let (t4, t2) = (pick(&a).value, pick(&b).value);
-                let bound = (v.value - t4).abs() + (t4 - t2).abs();
-                ratios[q].push(bound / err);
+                let bound = c.bound(q);
                 assert!(
                     bound <= err,
                     "{name}: {key} at c1 t/R = {}: actual up to {bound:.3e}, stated {err:.3e}",
-                    r.t
+                    c.t
                 );
+                own.push(bound / err);
             }
-        }
-        assert!(compared >= 20, "{name}: {compared} rows compared");
-        let mut line = format!("{name}:");
-        for ((key, _, _), r) in picks.iter().zip(&ratios) {
-            let mut own = r[r.len() - compared..].to_vec();
+            ratios[q].extend(&own);
             line += &format!(" {key} median {:.3}", median(&mut own));
         }
         eprintln!("{line}");
     }
+    assert_eq!(run, shorter.len(), "every named case is in the sweep");
     let summary: Vec<(f64, f64)> = ratios
         .iter_mut()
         .map(|r| (r.iter().copied().fold(0.0, f64::max), median(r)))
         .collect();
-    for ((key, _, _), (max, med)) in picks.iter().zip(&summary) {
+    for ((key, _), (max, med)) in PICKS.iter().zip(&summary) {
         eprintln!("{key}: actual/stated at most {max:.3}, median {med:.3}");
     }
-    for ((key, _, least), (_, med)) in picks.iter().zip(&summary) {
+    for (((key, _), (_, med)), least) in PICKS.iter().zip(&summary).zip(least) {
         assert!(
-            med >= least,
+            *med >= least,
             "{key}: the median of actual/stated is {med:.3}, below {least}: the estimates are not sharp"
         );
     }
