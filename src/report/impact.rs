@@ -1063,10 +1063,15 @@ impl RunReport {
                 .map(|p| format!(", order credited {p:.3}"))
                 .unwrap_or_default();
             s.push_str(&format!(
-                "# error_model: {key}: {} (safety {}{order}; conservative rows: {})\n",
+                "# error_model: {key}: {} (safety {}{order}; conservative rows: {}{})\n",
                 m.estimator.name(),
                 m.safety,
-                m.conservative_rows
+                m.conservative_rows,
+                if m.cell_floor_rows > 0 {
+                    format!("; at least half a cell at {} rows", m.cell_floor_rows)
+                } else {
+                    String::new()
+                }
             ));
         }
         for (key, reason) in &self.unavailable {

@@ -243,8 +243,8 @@ pub fn print_floor(digits: usize, bits: u32) -> f64 {
 }
 
 /// One history's error model as JSON (`error_model.<key>` of an impact run, plane or
-/// axisymmetric): its `estimator`, `safety`, `order_credited` (when one is) and
-/// `conservative_rows`.
+/// axisymmetric): its `estimator`, `safety`, `order_credited` (when one is),
+/// `conservative_rows` and `cell_floor_rows` (when there are).
 pub(crate) fn error_model_json(m: &::impact::ErrorModel) -> serde_json::Value {
     let mut o = serde_json::Map::new();
     o.insert("estimator".into(), serde_json::json!(m.estimator.name()));
@@ -256,5 +256,11 @@ pub(crate) fn error_model_json(m: &::impact::ErrorModel) -> serde_json::Value {
         "conservative_rows".into(),
         serde_json::json!(m.conservative_rows),
     );
+    if m.cell_floor_rows > 0 {
+        o.insert(
+            "cell_floor_rows".into(),
+            serde_json::json!(m.cell_floor_rows),
+        );
+    }
     serde_json::Value::Object(o)
 }

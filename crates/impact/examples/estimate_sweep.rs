@@ -40,7 +40,8 @@ fn main() {
             let v = match qi {
                 0 => r.step(n).map(|s| s.h),
                 1 => r.edge_at(n),
-                _ => r.force_at(n),
+                2 => r.force_at(n),
+                _ => None,
             };
             // the force is reported over rho c1^2 R = mu R/m^2
             let scale = if qi == 2 { sol.m * sol.m } else { 1.0 };

@@ -56,6 +56,9 @@ pub struct ErrorModel {
     /// edge's and the force's crossing fits are one-sided there) and the times while the
     /// coarsest grid's contact spans less than one of its cells.
     pub conservative_rows: usize,
+    /// The rows whose estimate is at least half the finest cell (b's, where the free edge is
+    /// captured cell by cell: faster than 0.8 c_R, or without the edge model).
+    pub cell_floor_rows: usize,
 }
 
 impl ErrorModel {
@@ -67,6 +70,7 @@ impl ErrorModel {
             safety: ESTIMATE_SAFETY,
             order_credited: None,
             conservative_rows: rows,
+            cell_floor_rows: 0,
         }
     }
 }
@@ -432,7 +436,7 @@ impl<T: Scalar> SolvedImpact<T> {
             }
             _ => None,
         };
-        let getters: [Getter<'_, T>; 7] = [
+        let getters: [Getter<'_, T>; 8] = [
             Box::new(|r, n| r.step(n).map(|s| s.h)),
             Box::new(|r, n| r.step(n).map(|s| s.v)),
             Box::new(|r, n| r.edge_at(n)),
@@ -447,6 +451,7 @@ impl<T: Scalar> SolvedImpact<T> {
                 r.step(n)
                     .map(|s| (mass * s.v * s.v * 0.5 + s.work + s.striker_work - e0) / e0)
             }),
+            Box::new(|r, n| r.step(n).map(|s| s.work)),
         ];
         // samples[q][level][i] (NaN where a level has no value)
         let samples: Vec<Vec<Vec<T>>> = getters
@@ -482,7 +487,7 @@ impl<T: Scalar> SolvedImpact<T> {
                 .unwrap_or(0)
         };
         let nuse = usable(0);
-        let ords: Vec<Option<f64>> = (0..7)
+        let ords: Vec<Option<f64>> = (0..getters.len())
             .map(|q| {
                 if self.runs.len() < 3 {
                     return None;
@@ -503,6 +508,30 @@ impl<T: Scalar> SolvedImpact<T> {
                         .is_none_or(|b| b < coarsest.dx)
             })
             .collect();
+        // the rows whose free edge is captured cell by cell (`docs/impact.md`, section 4):
+        // faster than FREE_EDGE_SPEED c_R (below c1), or everywhere without the edge model;
+        // there the levels may agree on an edge a fraction of a cell off, and b's estimate
+        // is at least half the finest cell
+        let whole_cell_edge: Vec<bool> = {
+            let b = &samples[2][0];
+            let free = self.case.law == EdgeLaw::Signorini
+                && !matches!(self.case.profile, crate::profile::Profile::Flat { .. });
+            let modelled = self.case.edge_gap_scale(self.m.to_f64()).is_some();
+            (0..times.len())
+                .map(|i| {
+                    let (a, c) = (i.saturating_sub(1), (i + 1).min(times.len() - 1));
+                    let speed = if c > a {
+                        ((b[c] - b[a]) / (times[c] - times[a])).abs().to_f64()
+                    } else {
+                        0.0
+                    };
+                    free && (!modelled
+                        || (speed > crate::march::FREE_EDGE_SPEED * self.s_r.to_f64()
+                            && speed < 1.0))
+                })
+                .collect()
+        };
+        let half_cell = 0.5 * fine.dx.to_f64();
         // the sharp estimator of h, b and the force where three levels show an order
         let sharp = |q: usize| -> Option<(SharpPolicy, f64)> {
             let policy = match q {
@@ -535,7 +564,12 @@ impl<T: Scalar> SolvedImpact<T> {
             if !d.is_finite() {
                 return None;
             }
-            Some(match credited {
+            let floor = if q == 2 && whole_cell_edge[i] {
+                half_cell
+            } else {
+                0.0
+            };
+            Some(floor.max(match credited {
                 // Richardson with the observed order up to the cap
                 Some((policy, p)) => policy.safety * d * richardson_factor(p),
                 // the conservative bound: no order above one credited
@@ -546,22 +580,26 @@ impl<T: Scalar> SolvedImpact<T> {
                         .unwrap_or(1.0);
                     ESTIMATE_SAFETY * d * factor
                 }
-            })
+            }))
         };
         let conservative_rows = conservative_row.iter().filter(|c| **c).count();
+        let cell_floor_rows = whole_cell_edge.iter().filter(|c| **c).count();
         let model = |q: usize| -> ErrorModel {
+            let cell_floor_rows = if q == 2 { cell_floor_rows } else { 0 };
             match sharp(q) {
                 Some((policy, p)) => ErrorModel {
                     estimator: Estimator::Richardson,
                     safety: policy.safety,
                     order_credited: Some(p),
                     conservative_rows,
+                    cell_floor_rows,
                 },
                 None => ErrorModel {
                     estimator: Estimator::Conservative,
                     safety: ESTIMATE_SAFETY,
                     order_credited: ords[q].filter(|p| *p > 0.0).map(|p| p.min(1.0)),
                     conservative_rows: times.len(),
+                    cell_floor_rows,
                 },
             }
         };
@@ -618,10 +656,19 @@ impl<T: Scalar> SolvedImpact<T> {
                     kind: ErrorKind::Refinement,
                 }
             });
-            let work = Value {
-                value: st.work * m2,
-                error: kinetic.and_then(|k| k.error),
-                kind: ErrorKind::Refinement,
+            // the work's own level differences, and never below the kinetic energy's
+            // estimate (what the striker loses, the half-plane takes up)
+            let work = {
+                let own = val(7, m2).error;
+                let lost = kinetic.and_then(|k| k.error);
+                Value {
+                    value: st.work * m2,
+                    error: match (own, lost) {
+                        (Some(a), Some(b)) => Some(a.max(b)),
+                        (a, b) => a.or(b),
+                    },
+                    kind: ErrorKind::Refinement,
+                }
             };
             let deformable = !matches!(self.case.striker, Striker::Rigid);
             // under Signorini's law the continuum's defect is exactly 0, so the defect is its

@@ -87,8 +87,21 @@ pub fn cases() -> Vec<(&'static str, ImpactCase)> {
     ]
 }
 
-pub type Pick = fn(&HistoryRow) -> Value;
-pub const PICKS: [(&str, Pick); 3] = [("h", |r| r.h), ("b", |r| r.b), ("force", |r| r.force)];
+/// A reported history's value at a row (`None` where the case has no such history).
+pub type Pick = fn(&HistoryRow) -> Option<Value>;
+
+/// The histories compared: h, b and the force (the sharp estimator), then the penetration
+/// speed, the striker's kinetic energy, the work on the half-plane and the energy defect
+/// (the conservative bound).
+pub const PICKS: [(&str, Pick); 7] = [
+    ("h", |r| Some(r.h)),
+    ("b", |r| Some(r.b)),
+    ("force", |r| Some(r.force)),
+    ("hdot", |r| Some(r.hdot)),
+    ("kinetic", |r| r.kinetic),
+    ("work", |r| Some(r.work)),
+    ("energy defect", |r| r.energy_defect),
+];
 
 pub fn median(v: &mut [f64]) -> f64 {
     v.sort_by(|a, b| a.total_cmp(b));
@@ -103,7 +116,7 @@ pub struct Compared {
     /// c1 t/R.
     pub t: f64,
     /// (value, stated error, four times finer, twice finer) per quantity.
-    pub q: [(f64, Option<f64>, f64, f64); 3],
+    pub q: [(f64, Option<f64>, f64, f64); PICKS.len()],
 }
 
 impl Compared {
@@ -135,9 +148,9 @@ pub fn compare(base: &ImpactCase, dx: f64) -> (SolvedImpact, Vec<HistoryRow>, Ve
         .enumerate()
         .filter_map(|(i, r)| {
             let (a, b) = (find(&r4, r.t)?, find(&r2, r.t)?);
-            let q = PICKS.map(|(_, pick)| {
-                let v = pick(r);
-                (v.value, v.error, pick(&a).value, pick(&b).value)
+            let q = PICKS.map(|(_, pick)| match (pick(r), pick(&a), pick(&b)) {
+                (Some(v), Some(x), Some(y)) => (v.value, v.error, x.value, y.value),
+                _ => (f64::NAN, None, f64::NAN, f64::NAN),
             });
             Some(Compared { i, t: r.t, q })
         })

@@ -96,7 +96,7 @@ pub(super) fn pow<T: Scalar>(d: T, e: T) -> T {
 
 /// Fraction of the Rayleigh speed below which a free (Signorini) edge is placed inside its
 /// cell by the local model; faster free edges are captured cell by cell.
-pub(super) const FREE_EDGE_SPEED: f64 = 0.8;
+pub(crate) const FREE_EDGE_SPEED: f64 = 0.8;
 
 impl<T: Scalar> EdgeModel<T> {
     /// (1/dx) Int_lo^hi d^lambda dd (0 <= lo <= hi).

@@ -27,6 +27,7 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
         ("kinematic power k 3", 4.0),
         ("wedge 80", 2.0),
     ];
+    // the medians held for h, b and the force (the sharp estimator)
     let least = [0.05, 0.04, 0.05];
     let dx = 0.01;
     let mut ratios = vec![Vec::new(); PICKS.len()];
@@ -56,6 +57,9 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
         for (q, (key, _)) in PICKS.iter().enumerate() {
             let mut own = Vec::new();
             for c in &compared {
+                if c.q[q].0.is_nan() {
+                    continue;
+                }
                 let err = c.q[q].1.expect("every row carries an estimate");
                 assert!(
                     err.is_finite() && err > 0.0,
@@ -84,6 +88,7 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
         eprintln!("{key}: actual/stated at most {max:.3}, median {med:.3}");
     }
     for (((key, _), (_, med)), least) in PICKS.iter().zip(&summary).zip(least) {
+        // (the zip stops at the sharp estimator's three)
         assert!(
             *med >= least,
             "{key}: the median of actual/stated is {med:.3}, below {least}: the estimates are not sharp"
