@@ -11,7 +11,7 @@
 //!
 //! `cargo run --release -p impact --features examples --example estimate_sweep -- [dx] [raw.csv]`
 //! (default dx R/100). With a second argument, every row's level values, reference values and
-//! stated error are written there as CSV.
+//! stated error are written there as CSV; `CASE=name` runs the cases whose name contains it.
 use std::io::Write;
 
 mod sweep;
@@ -30,7 +30,11 @@ fn main() {
     });
     let mut all: Vec<(Vec<f64>, Vec<f64>)> = vec![(Vec::new(), Vec::new()); PICKS.len()];
     println!("case                  quantity  max actual/stated  median actual/stated  median stated (rel)");
+    let only = std::env::var("CASE").ok();
     for (name, base) in cases() {
+        if only.as_ref().is_some_and(|o| !name.contains(o.as_str())) {
+            continue;
+        }
         let (sol, _, compared) = compare(&base, dx);
         // each level's value at report row i (the levels share the report times)
         let dtr = sol.report_dt();
@@ -49,6 +53,7 @@ fn main() {
         };
         for (qi, (q, _)) in PICKS.iter().enumerate() {
             let (mut ratios, mut rel) = (Vec::new(), Vec::new());
+            let mut worst = (0.0f64, 0.0);
             for c in &compared {
                 let (value, stated, t4, t2) = c.q[qi];
                 let Some(err) = stated else { continue };
@@ -62,6 +67,9 @@ fn main() {
                     .unwrap();
                 }
                 ratios.push(c.bound(qi) / err);
+                if c.bound(qi) / err > worst.0 {
+                    worst = (c.bound(qi) / err, c.t);
+                }
                 if value.abs() > 0.0 {
                     rel.push(err / value.abs());
                 }
@@ -73,9 +81,10 @@ fn main() {
             all[qi].1.extend(&rel);
             let max = ratios.iter().copied().fold(0.0, f64::max);
             println!(
-                "{name:<21} {q:<9} {max:>10.3}  {:>18.3}  {:>20.2e}",
+                "{name:<21} {q:<9} {max:>10.3}  {:>18.3}  {:>20.2e}  (largest at c1 t/R = {})",
                 median(&mut ratios),
-                median(&mut rel)
+                median(&mut rel),
+                worst.1
             );
         }
     }

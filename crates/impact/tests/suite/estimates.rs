@@ -95,3 +95,47 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
         );
     }
 }
+
+/// The kinematic law's force on the reference case at the default grid (R/200, three
+/// levels) against R/800: within its stated error at every report time, where the edge
+/// advances and where it nearly stands still near the largest penetration. (Its actual error
+/// is printed, the last report time, one-sided, aside: about 1e-3 of the peak,
+/// `docs/impact.md`, section 4; the aim of 1e-4 is not reached.)
+#[test]
+fn the_kinematic_force_is_within_its_stated_error_at_the_default_grid() {
+    let base = impact::ImpactCase::reference(impact::EdgeLaw::Kinematic);
+    let (_, rows, compared) = compare(&base, 0.005);
+    let q = PICKS
+        .iter()
+        .position(|(k, _)| *k == "force")
+        .expect("the force is compared");
+    let peak = compared.iter().map(|c| c.q[q].2.abs()).fold(0.0, f64::max);
+    let (mut advancing, mut standing) = ((0.0f64, 0.0), (0.0f64, 0.0));
+    for c in &compared {
+        let err = c.q[q].1.expect("every row carries an estimate");
+        let bound = c.bound(q);
+        assert!(
+            bound <= err,
+            "c1 t/R = {}: the force's actual error up to {bound:.3e}, stated {err:.3e}",
+            c.t
+        );
+        if c.i + 1 == rows.len() {
+            continue;
+        }
+        // an edge slower than 0.01 c1 takes over fifty steps to cross a cell: it stands
+        // still for the crossing fits
+        let worst = if rows[c.i].bdot > 0.01 {
+            &mut advancing
+        } else {
+            &mut standing
+        };
+        if bound / peak > worst.0 {
+            *worst = (bound / peak, c.t);
+        }
+    }
+    assert!(compared.len() >= 100, "{} rows compared", compared.len());
+    eprintln!(
+        "the kinematic force's error, share of its peak: at most {:.2e} (c1 t/R = {}) while the edge advances, {:.2e} (c1 t/R = {}) where it does not",
+        advancing.0, advancing.1, standing.0, standing.1
+    );
+}
