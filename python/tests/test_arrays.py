@@ -35,6 +35,7 @@ def test_arrays_are_owned_writable_float64():
 def test_the_error_model_of_each_estimated_history_is_stated():
     a = dyncontact.impact.run(**RUN)
     models = a.to_dict()["error_model"]
+    assert a.error_model == models  # a key of the report, as an attribute
     assert set(models) == set(a.to_dict()["error_estimate"]) & set(a.history_keys())
     for key, m in models.items():
         assert m["estimator"] in ("richardson", "conservative"), key
