@@ -52,9 +52,9 @@ pub struct ErrorModel {
     /// The order credited in the Richardson factor 1/(2^p - 1) (never above 1 for the
     /// conservative bound, which credits no order above the first).
     pub order_credited: Option<f64>,
-    /// The rows that took the conservative bound all the same: the last report time (the
-    /// edge's and the force's crossing fits are one-sided there) and the times while the
-    /// coarsest grid's contact spans less than one of its cells.
+    /// The rows that took the conservative bound all the same: the times while the coarsest
+    /// grid's contact spans less than one of its cells, and for b and the force the last
+    /// report time (their crossing fits are one-sided there).
     pub conservative_rows: usize,
     /// The rows whose estimate is at least half the finest cell (b's, where the free edge is
     /// captured cell by cell: faster than 0.8 c_R, or without the edge model).
@@ -496,18 +496,19 @@ impl<T: Scalar> SolvedImpact<T> {
                 order(&s[0][..nuse], &s[1][..nuse], &s[2][..nuse])
             })
             .collect();
-        // the rows that take the conservative bound whatever the model: the last report
-        // time (the crossing fits are one-sided there) and those while the coarsest grid's
-        // contact spans less than one of its cells
+        // the rows that take the conservative bound whatever the model: those while the
+        // coarsest grid's contact spans less than one of its cells, and for b and the force
+        // the last report time (their crossing fits are one-sided there; h is a step's own)
         let coarsest = &self.runs[self.runs.len() - 1];
-        let conservative_row: Vec<bool> = (0..times.len())
+        let coarse_contact: Vec<bool> = (0..times.len())
             .map(|i| {
-                i + 1 == times.len()
-                    || coarsest
-                        .edge_at(step_at(coarsest, i))
-                        .is_none_or(|b| b < coarsest.dx)
+                coarsest
+                    .edge_at(step_at(coarsest, i))
+                    .is_none_or(|b| b < coarsest.dx)
             })
             .collect();
+        let conservative_row =
+            |q: usize, i: usize| coarse_contact[i] || (q != 0 && i + 1 == times.len());
         // the rows whose free edge is captured cell by cell (`docs/impact.md`, section 4):
         // faster than FREE_EDGE_SPEED c_R (below c1), or everywhere without the edge model;
         // there the levels may agree on an edge a fraction of a cell off, and b's estimate
@@ -549,7 +550,7 @@ impl<T: Scalar> SolvedImpact<T> {
             }
             // the level differences over the neighbouring report times, and the coarser
             // pair scaled down by the order credited
-            let credited = sharp(q).filter(|_| !conservative_row[i]);
+            let credited = sharp(q).filter(|_| !conservative_row(q, i));
             let coarse_scale = credited.map_or(0.5, |(_, p)| 0.5f64.powf(p.max(1.0)));
             let mut d: f64 = 0.0;
             for j in
@@ -582,7 +583,8 @@ impl<T: Scalar> SolvedImpact<T> {
                 }
             }))
         };
-        let conservative_rows = conservative_row.iter().filter(|c| **c).count();
+        let conservative_rows =
+            |q: usize| (0..times.len()).filter(|&i| conservative_row(q, i)).count();
         let cell_floor_rows = whole_cell_edge.iter().filter(|c| **c).count();
         let model = |q: usize| -> ErrorModel {
             let cell_floor_rows = if q == 2 { cell_floor_rows } else { 0 };
@@ -591,7 +593,7 @@ impl<T: Scalar> SolvedImpact<T> {
                     estimator: Estimator::Richardson,
                     safety: policy.safety,
                     order_credited: Some(p),
-                    conservative_rows,
+                    conservative_rows: conservative_rows(q),
                     cell_floor_rows,
                 },
                 None => ErrorModel {

@@ -44,8 +44,12 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
             .1
             .models
             .expect("three levels have error models");
+        // b's and the force's last rows are conservative (one-sided crossing fits)
         for m in [models.h, models.b, models.force] {
-            assert!(m.safety > 0.0 && m.conservative_rows >= 1, "{name}: {m:?}");
+            assert!(m.safety > 0.0, "{name}: {m:?}");
+        }
+        for m in [models.b, models.force] {
+            assert!(m.conservative_rows >= 1, "{name}: {m:?}");
         }
         assert_eq!(models.others.estimator, Estimator::Conservative);
         assert!(
