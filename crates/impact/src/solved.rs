@@ -100,9 +100,16 @@ const SHARP_FORCE: SharpPolicy = SharpPolicy {
     order_cap: 2.0,
 };
 
-/// Richardson's factor 1/(2^p - 1) for the order p, never below 1 when p is at most one.
+/// Richardson's factor 1/(2^p - 1) for the order p (at least 1 when p is at most one).
 fn richardson_factor(p: f64) -> f64 {
     1.0 / (2f64.powf(p) - 1.0)
+}
+
+/// The conservative bound's factor for the observed order `p`: Richardson's where p is
+/// positive, never below 1 (no order above the first credited), 1 without an order.
+fn conservative_factor(p: Option<f64>) -> f64 {
+    p.filter(|p| *p > 0.0)
+        .map_or(1.0, |p| richardson_factor(p).max(1.0))
 }
 
 /// The lowest observed order at which the sharp estimator is used.
@@ -281,8 +288,8 @@ pub(crate) fn level_estimate(values: &[f64]) -> Option<f64> {
     let factor = match d2 {
         Some(d2) if d1 > 0.0 && d2 > 0.0 => {
             let p = (d2 / d1).log2();
-            if p > 0.5 {
-                (1.0 / (2f64.powf(p) - 1.0)).max(1.0)
+            if p > ORDER_SHOWN {
+                conservative_factor(Some(p))
             } else {
                 2.0
             }
@@ -307,10 +314,7 @@ pub(crate) fn windowed_estimates(levels: &[Vec<f64>]) -> (Option<Vec<f64>>, Opti
     } else {
         None
     };
-    let factor = ord
-        .filter(|p| *p > 0.0)
-        .map(|p| (1.0 / (2f64.powf(p) - 1.0)).max(1.0))
-        .unwrap_or(1.0);
+    let factor = conservative_factor(ord);
     let est = (0..n)
         .map(|i| {
             let mut d: f64 = 0.0;
@@ -513,22 +517,28 @@ impl<T: Scalar> SolvedImpact<T> {
         // faster than FREE_EDGE_SPEED c_R (below c1), or everywhere without the edge model;
         // there the levels may agree on an edge a fraction of a cell off, and b's estimate
         // is at least half the finest cell
+        // the finest grid's edge speed at each report time: the centred difference over one
+        // report interval either side (the reported bdot)
+        let bdot: Vec<T> = (0..times.len())
+            .map(|i| {
+                let b = &samples[2][0];
+                let (a, c) = (i.saturating_sub(1), (i + 1).min(times.len() - 1));
+                if c > a {
+                    (b[c] - b[a]) / (times[c] - times[a])
+                } else {
+                    zero
+                }
+            })
+            .collect();
         let whole_cell_edge: Vec<bool> = {
-            let b = &samples[2][0];
             let free = self.case.law == EdgeLaw::Signorini
                 && !matches!(self.case.profile, crate::profile::Profile::Flat { .. });
             let modelled = self.case.edge_gap_scale(self.m.to_f64()).is_some();
-            (0..times.len())
-                .map(|i| {
-                    let (a, c) = (i.saturating_sub(1), (i + 1).min(times.len() - 1));
-                    let speed = if c > a {
-                        ((b[c] - b[a]) / (times[c] - times[a])).abs().to_f64()
-                    } else {
-                        0.0
-                    };
-                    free && (!modelled
-                        || (speed > crate::march::FREE_EDGE_SPEED * self.s_r.to_f64()
-                            && speed < 1.0))
+            let fast = crate::march::FREE_EDGE_SPEED * self.s_r.to_f64();
+            bdot.iter()
+                .map(|v| {
+                    let speed = v.abs().to_f64();
+                    free && (!modelled || (speed > fast && speed < 1.0))
                 })
                 .collect()
         };
@@ -574,13 +584,7 @@ impl<T: Scalar> SolvedImpact<T> {
                 // Richardson with the observed order up to the cap
                 Some((policy, p)) => policy.safety * d * richardson_factor(p),
                 // the conservative bound: no order above one credited
-                None => {
-                    let factor = ords[q]
-                        .filter(|p| *p > 0.0)
-                        .map(|p| richardson_factor(p).max(1.0))
-                        .unwrap_or(1.0);
-                    ESTIMATE_SAFETY * d * factor
-                }
+                None => ESTIMATE_SAFETY * d * conservative_factor(ords[q]),
             }))
         };
         let conservative_rows =
@@ -588,7 +592,8 @@ impl<T: Scalar> SolvedImpact<T> {
         let cell_floor_rows = whole_cell_edge.iter().filter(|c| **c).count();
         let model = |q: usize| -> ErrorModel {
             let cell_floor_rows = if q == 2 { cell_floor_rows } else { 0 };
-            match sharp(q) {
+            // the sharp estimator where at least one row took it
+            match sharp(q).filter(|_| conservative_rows(q) < times.len()) {
                 Some((policy, p)) => ErrorModel {
                     estimator: Estimator::Richardson,
                     safety: policy.safety,
@@ -623,15 +628,7 @@ impl<T: Scalar> SolvedImpact<T> {
                 },
                 kind: ErrorKind::Refinement,
             };
-            let bdot = {
-                let b = |j: usize| samples[2][0][j];
-                let (a, c) = (i.saturating_sub(1), (i + 1).min(times.len() - 1));
-                if c > a {
-                    (b(c) - b(a)) / (times[c] - times[a])
-                } else {
-                    zero
-                }
-            };
+            let bdot = bdot[i];
             let speed = bdot.abs();
             let stage = if speed > 1.0 {
                 Stage::Supersonic
