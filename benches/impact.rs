@@ -1,10 +1,12 @@
 //! Benchmarks of the impact engine (crate `impact`), f64, one thread: the reference case (free
 //! rigid cylinder, m0/(rho R^2) = 10, V0/c1 = 0.01, c2/c1 = 1000/1870.83, to c1 t/R = 10) on one
-//! grid at dx = R/50 and R/100, and with three grids (the error estimates) at R/100 and R/200; the same
+//! grid at dx = R/50 and R/100, and with three grids (the error estimates) at R/100 and R/200,
+//! with the default start on grids 64 times finer (`docs/impact.md`, section 11) and, at R/200,
+//! beside the same three grids throughout without it; the same
 //! case with a thin-shell striker of equal mass (h_s/R = 0.05, steel) on one grid at R/100.
 //! The reference case in double-double (`ImpactCase::solve_at`, `impact run --digits`) on one
 //! grid at R/50 and with three grids at R/50, beside its f64 rows.
-//! The scaling group: the reference case on one grid at R/50, R/100, R/200 and R/400, and the
+//! The scaling group: the reference case on one grid throughout at R/50, R/100, R/200 and R/400, and the
 //! fitted exponent of its time against its space-time cells N_t N_x (printed after the group,
 //! beside the exponent N log N would have over the same cells). The cost against N_t and N_x
 //! separately: `cargo run --release -p impact --features examples --example cost_scaling`.
@@ -56,6 +58,17 @@ fn bench(c: &mut Criterion) {
             |b, case| b.iter(|| black_box(case.solve(|_| {}).unwrap())),
         );
     }
+    // the default grid on one grid throughout, without the start on finer grids
+    let mut case = reference(0.005, 3, 10.0);
+    case.start_halvings = 0;
+    g.bench_with_input(
+        BenchmarkId::new(
+            "rigid_reference_one_grid_throughout",
+            "R_over_dx=200, levels=3",
+        ),
+        &case,
+        |b, case| b.iter(|| black_box(case.solve(|_| {}).unwrap())),
+    );
     let shell = ShellStriker {
         thickness: 0.05,
         material: StrikerMaterial {
@@ -97,7 +110,9 @@ fn scaling(c: &mut Criterion) {
     g.sample_size(10);
     let mut rows = Vec::new();
     for r_over_dx in [50.0, 100.0, 200.0, 400.0] {
-        let case = reference(1.0 / r_over_dx, 1, 10.0);
+        // one grid throughout (the start on finer grids is not this grid's cells)
+        let mut case = reference(1.0 / r_over_dx, 1, 10.0);
+        case.start_halvings = 0;
         let sol = case.solve(|_| {}).unwrap();
         let run = &sol.runs[0];
         let nx = run

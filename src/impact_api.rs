@@ -66,6 +66,9 @@ pub struct RunInput {
     pub levels: usize,
     /// The edge cell: `model` or `whole`.
     pub edge_cell: String,
+    /// How many times the grid is halved for the first steps (`None`: the engine's default,
+    /// [`impact::solve::START_HALVINGS`]; 0: one grid throughout; `docs/impact.md`, section 11).
+    pub start_halvings: Option<usize>,
     /// Pressure profiles at `c1t/R=T1,T2,...`.
     pub pressure_at: Option<String>,
     /// Significant digits (1 to [`RUN_MAX_DIGITS`], the march in double-double); `None` for f64.
@@ -103,6 +106,7 @@ impl Default for RunInput {
             kappa: 2.0,
             levels: 3,
             edge_cell: "model".into(),
+            start_halvings: None,
             pressure_at: None,
             digits: None,
             force: false,
@@ -143,6 +147,9 @@ impl RunInput {
         c.dx = self.dx;
         c.kappa = self.kappa;
         c.levels = self.levels;
+        if let Some(k) = self.start_halvings {
+            c.start_halvings = k;
+        }
         c.edge_model = match self.edge_cell.as_str() {
             "model" => true,
             "whole" => false,

@@ -70,6 +70,7 @@ def run(
     kappa: Optional[float] = None,
     levels: Optional[int] = None,
     edge_cell: Optional[str] = None,
+    start_halvings: Optional[int] = None,
     pressure_at: Union[str, Sequence[Number], None] = None,
     digits: Optional[int] = None,
     force: bool = False,
@@ -91,6 +92,9 @@ def run(
     ``radiated_energy_fraction`` (a history), ``restitution`` after the separation, and
     Hertz's values and the first-order radiation beside them (``hertz``,
     ``first_order_radiation``).
+
+    ``start_halvings``: how many times the grid is halved for the first steps (default 6, 0:
+    one grid throughout; a rigid striker of a curved profile under Signorini's law).
 
     ``progress=True`` shows a tqdm bar, a callable receives the fraction done; Ctrl-C
     (KeyboardInterrupt) stops the march within a second. The GIL is released meanwhile.

@@ -177,6 +177,12 @@ pub struct RunArgs {
     /// comparing the two.
     #[arg(long)]
     edge_cell: Option<String>,
+    /// How many times the grid is halved for the first steps (0 to 12, default 6): each
+    /// level's first steps on cells 2, 4, ..., 2^K times finer, handed over as the contact
+    /// widens (a rigid striker of a curved profile under Signorini's law); 0: one grid
+    /// throughout.
+    #[arg(long)]
+    start_halvings: Option<usize>,
     /// Pressure profiles at these times: c1t/R=T1,T2,...
     #[arg(long)]
     pressure_at: Option<String>,
@@ -255,6 +261,12 @@ impl RunArgs {
                     "invalid --edge-cell with --geometry axisymmetric: the rings are whole (the edge model is the plane march's)",
                 ));
             }
+            if self.start_halvings.is_some() {
+                return Err(InputError::new(
+                    "start_halvings",
+                    "invalid --start-halvings with --geometry axisymmetric: the start on finer grids is the plane march's",
+                ));
+            }
         } else if self.dr.is_some() {
             return Err(InputError::new(
                 "dr",
@@ -277,6 +289,7 @@ impl RunArgs {
             kappa: self.kappa,
             levels: self.levels,
             edge_cell: self.edge_cell.clone().unwrap_or_else(|| "model".into()),
+            start_halvings: self.start_halvings,
             pressure_at: self.pressure_at.clone(),
             digits: self.digits,
             force: self.force,

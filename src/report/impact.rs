@@ -262,6 +262,9 @@ pub struct GridReport {
     pub levels: usize,
     /// `model` or `whole`.
     pub edge_cell: &'static str,
+    /// How many times the grid was halved for the first steps (0: one grid throughout;
+    /// `docs/impact.md`, section 11).
+    pub start_halvings: usize,
     /// The peak memory the run was estimated to need before it started, GiB
     /// (`impact::cost`, `docs/impact.md`, section 10).
     pub estimated_memory_gib: f64,
@@ -621,6 +624,11 @@ impl RunReport {
                 } else {
                     "whole"
                 },
+                start_halvings: if sol.case.starts_finer() {
+                    sol.case.start_halvings
+                } else {
+                    0
+                },
                 estimated_memory_gib: sol.case.cost_estimate().gib(),
             },
             c1t_over_r: rows.iter().map(|r| dg(r.t)).collect(),
@@ -972,6 +980,7 @@ impl RunReport {
             "kappa": g.kappa,
             "levels": g.levels,
             "edge_cell": g.edge_cell,
+            "start_halvings": g.start_halvings,
             "estimated_memory_gib": g.estimated_memory_gib,
         })
     }

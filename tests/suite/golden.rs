@@ -8,7 +8,10 @@
 //! driven run's work gained an estimate), beside the added `error_model`, the grid's
 //! `estimated_memory_gib` and the edge's speed declared under `unavailable`; b's estimate was
 //! then raised to half the finest cell where the edge is captured cell by cell (the elastic
-//! striker and the shell, no smaller than before).
+//! striker and the shell, no smaller than before). They were captured again when the levels
+//! began to start on finer grids (`docs/impact.md`, section 11): every changed value moved by
+//! at most half the sum of its old and new stated errors (the early b and force most), and
+//! the grid gained `start_halvings`.
 
 use std::path::Path;
 use std::process::Command;

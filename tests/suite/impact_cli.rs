@@ -1059,7 +1059,8 @@ fn run_to_separation_and_refusals() {
 
 /// A run states the memory it was estimated to need before it started (`grid`), and that
 /// statement is the one the limit is held to: a limit just below it refuses the run in one
-/// line naming --dx, just above it runs the case; the statement grows with the grid about as
+/// line naming --dx, just above it runs the case (with the start on finer grids, whose grids
+/// the statement covers); on one grid throughout the statement grows with the grid about as
 /// its space-time cells do (halving dx doubles the steps and the contact's cells).
 #[test]
 fn run_states_its_memory_need_and_the_limit_holds_it() {
@@ -1070,8 +1071,14 @@ fn run_states_its_memory_need_and_the_limit_holds_it() {
         a.extend(["--dx", dx]);
         a
     };
-    let coarse = json(&with_dx("0.01"));
-    let fine = json(&with_dx("0.0025"));
+    // one grid throughout: the history's part grows with the grid's space-time cells
+    let one_grid = |dx: &'static str| {
+        let mut a = with_dx(dx);
+        a.extend(["--start-halvings", "0"]);
+        a
+    };
+    let coarse = json(&one_grid("0.01"));
+    let fine = json(&one_grid("0.0025"));
     let gib = |v: &Value| v["grid"]["estimated_memory_gib"].as_f64().unwrap();
     let (gc, gf) = (gib(&coarse), gib(&fine));
     assert!(gc > 0.0 && gf > gc, "{gc} {gf}");
@@ -1079,6 +1086,10 @@ fn run_states_its_memory_need_and_the_limit_holds_it() {
     let base = 64.0 / 1024.0;
     let growth = (gf - base) / (gc - base);
     assert!((8.0..=32.0).contains(&growth), "growth {growth}");
+    // with the start on finer grids (the default) the statement covers its grids too
+    let fine = json(&with_dx("0.0025"));
+    let gf = gib(&fine);
+    assert_eq!(fine["grid"]["start_halvings"].as_u64(), Some(6));
     for (factor, refused) in [(0.99, true), (1.01, false)] {
         let mut a = with_dx("0.0025");
         let limit = format!("{}", gf * factor);

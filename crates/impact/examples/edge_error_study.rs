@@ -5,7 +5,7 @@
 //!   c1 t/R in [0.5, 2), [2, 5), [5, 7.5), [7.5, 10) relative to each one's peak, b as
 //!   reported (`RAW=1`: the per-step edges interpolated to t_n; `KAPPA=K`: another time step;
 //!   `LAW=kinematic`: the kinematic law; `WINDOWS=0.02:0.1,0.1:0.5`: other ranges;
-//!   `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and per step).
+//!   `START=K`, `REF_START=K`: the start on grids 2^K times finer (`START_GRID=DX`: every run's start on the hand-over schedule of DX); `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and per step, and the force's in 1e-6 of its peak).
 //!
 //! The slowly driven parabola against Hertz's edge and the driven wedge's edge against the
 //! wedge crate are the tests `slow_free_edge_follows_hertz` (`tests/suite/physics.rs`) and
@@ -13,7 +13,7 @@
 //! measure (`--nocapture`).
 use impact::{EdgeLaw, ImpactCase};
 
-fn single(dx: f64) -> (impact::run::Run, f64) {
+fn single(dx: f64, start: usize, grid: Option<f64>) -> (impact::run::Run, f64) {
     let law = match std::env::var("LAW").as_deref() {
         Ok("kinematic") => EdgeLaw::Kinematic,
         _ => EdgeLaw::Signorini,
@@ -21,6 +21,8 @@ fn single(dx: f64) -> (impact::run::Run, f64) {
     let mut case = ImpactCase::reference(law);
     case.dx = dx;
     case.levels = 1;
+    case.start_halvings = start;
+    case.start_grid = grid;
     if let Ok(k) = std::env::var("KAPPA") {
         case.kappa = k.parse().expect("a number");
     }
@@ -41,7 +43,11 @@ fn edge(run: &impact::run::Run, n: usize) -> f64 {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let dref: f64 = args[0].parse().unwrap();
-    let (rref, tref) = single(dref);
+    let env = |k: &str| std::env::var(k).map_or(0, |v| v.parse().expect("a count"));
+    let grid = std::env::var("START_GRID")
+        .ok()
+        .map(|v| v.parse().expect("a width"));
+    let (rref, tref) = single(dref, env("REF_START"), grid);
     let bpk = rref.steps.iter().map(|s| s.b).fold(0.0, f64::max);
     let hpk = rref.steps.iter().map(|s| s.h).fold(0.0, f64::max);
     let fpk = (0..rref.steps.len())
@@ -60,7 +66,7 @@ fn main() {
     };
     for a in &args[1..] {
         let dx: f64 = a.parse().unwrap();
-        let (run, el) = single(dx);
+        let (run, el) = single(dx, env("START"), grid);
         let ratio = (dx / dref).round() as usize;
         let mut eb = vec![0.0f64; windows.len()];
         let mut eh = vec![0.0f64; windows.len()];
@@ -90,11 +96,16 @@ fn main() {
                 let m = (n + 1) * ratio - 1;
                 let Some(r) = rref.steps.get(m) else { continue };
                 if s.t >= lo && s.t < hi {
+                    let df = match (run.force_at(n + 1), rref.force_at(m + 1)) {
+                        (Some(f), Some(g)) => (f - g) / fpk * 1e6,
+                        _ => f64::NAN,
+                    };
                     print!(
-                        "{:.3}:{:+.1}|{:+.1} ",
+                        "{:.3}:{:+.1}|{:+.1}|F{:+.0} ",
                         s.t,
                         (edge(&run, n + 1) - edge(&rref, m + 1)) * 1e6,
-                        (s.b - r.b) * 1e6
+                        (s.b - r.b) * 1e6,
+                        df
                     );
                 }
             }

@@ -99,6 +99,9 @@ pub enum Stop {
     AtSeparation,
 }
 
+/// The largest [`ImpactCase::start_halvings`]: cells 4096 times finer.
+pub const START_HALVINGS_MAX: usize = 12;
+
 /// The inputs of a case.
 #[derive(Clone, Debug)]
 pub struct ImpactCase {
@@ -130,10 +133,21 @@ pub struct ImpactCase {
     /// (`lamb::edge`, `docs/impact.md`, section 4; default): the edge then moves continuously
     /// inside its cell. `false`: whole cells (the edge captured cell by cell).
     pub edge_model: bool,
+    /// How many times the grid is halved at the start (`docs/impact.md`, section 11): the
+    /// first steps of every level are marched on cells 2, 4, ..., 2^start_halvings times
+    /// finer, each handing over (its steps merged by their means) once the contact spans
+    /// [`crate::solve::START_CELLS`] cells of the next coarser grid. 0: one grid throughout.
+    pub start_halvings: usize,
+    /// The cell width dx/R whose hand-over schedule the start follows (`None`: [`Self::dx`]):
+    /// a finer grid given a coarser one's schedule is that run refined at every time, the
+    /// reference of a refinement study (with its own schedule a finer grid's start would
+    /// hand over at narrower contacts, on the same grids as the coarser run).
+    pub start_grid: Option<f64>,
 }
 
 impl ImpactCase {
-    /// The case with the defaults dx = 0.01, kappa = 2, three levels.
+    /// The case with the defaults dx = 0.01, kappa = 2, three levels, the start on cells 64
+    /// times finer ([`crate::solve::START_HALVINGS`]).
     pub fn new(poisson: f64, profile: Profile, drive: Drive, law: EdgeLaw, end: f64) -> Self {
         ImpactCase {
             poisson,
@@ -148,6 +162,8 @@ impl ImpactCase {
             kappa: 2.0,
             levels: 3,
             edge_model: true,
+            start_grid: None,
+            start_halvings: crate::solve::START_HALVINGS,
         }
     }
 
@@ -284,6 +300,18 @@ impl ImpactCase {
         }
         if !(1..=4).contains(&self.levels) {
             return Err(invalid("refinement levels", self.levels, "1 to 4"));
+        }
+        if self.start_halvings > START_HALVINGS_MAX {
+            return Err(invalid(
+                "start halvings",
+                self.start_halvings,
+                format!("0 to {START_HALVINGS_MAX} (the start's finest cells dx/2^K)"),
+            ));
+        }
+        if let Some(g) = self.start_grid {
+            if !(g.is_finite() && g > 0.0) {
+                return Err(invalid("start grid dx/R", g, "(0, inf)"));
+            }
         }
         let coarse = self.dx * (1 << (self.levels - 1)) as f64;
         let steps = self.end / (self.kappa * self.dx);

@@ -17,6 +17,7 @@
 //! known in advance, is held to the limit too.
 
 use crate::case::{Drive, ImpactCase};
+use crate::solve::START_STEPS;
 
 /// The default memory limit of a run, GiB.
 pub const DEFAULT_MEMORY_LIMIT_GIB: f64 = 4.0;
@@ -57,24 +58,24 @@ impl ImpactCase {
     /// (or the cap), and its width from the widest contact the motion allows: the kinematic
     /// edge of the largest penetration, V0 t for a free striker (it never moves in faster
     /// than it started), V t or the table's largest h when driven, within the profile's
-    /// extent.
+    /// extent; with the start on finer grids ([`ImpactCase::start_halvings`]) the largest of
+    /// its grids' marches too (each to its latest hand-over).
     pub fn cost_estimate(&self) -> CostEstimate {
-        let h_max = match &self.drive {
-            Drive::Free { v0_over_c1, .. } => v0_over_c1 * self.end,
-            Drive::Speed(v) => v * self.end,
-            Drive::Table(t) => t.iter().map(|p| p.1).fold(0.0, f64::max),
+        // the widest contact by time t: the kinematic edge of the largest penetration
+        let edge_by = |t: f64| {
+            let h_max = match &self.drive {
+                Drive::Free { v0_over_c1, .. } => v0_over_c1 * t,
+                Drive::Speed(v) => v * t,
+                Drive::Table(tab) => tab.iter().map(|p| p.1).fold(0.0, f64::max),
+            };
+            self.profile
+                .kinematic_edge::<f64>(h_max.max(0.0))
+                .unwrap_or(f64::INFINITY)
+                .min(self.profile.extent())
         };
-        let b = self
-            .profile
-            .kinematic_edge::<f64>(h_max.max(0.0))
-            .unwrap_or(f64::INFINITY)
-            .min(self.profile.extent());
-        let mut bytes = 0.0f64;
-        let mut cell_steps = 0.0;
-        let (mut steps0, mut width0) = (0, 0);
-        for level in 0..self.levels.max(1) {
-            let dx = self.dx * (1u64 << level) as f64;
-            let steps = (self.end / (self.kappa * dx)).ceil().max(1.0);
+        // one march of `steps` steps over a contact of `b` on cells dx: its history's bytes
+        // and space-time cells
+        let march = |dx: f64, steps: f64, b: f64| {
             let cells = (b / dx).ceil().max(0.0) + 4.0;
             let width = if cells.is_finite() && cells < 1e12 {
                 (cells as usize).next_power_of_two().max(8)
@@ -82,11 +83,39 @@ impl ImpactCase {
                 usize::MAX / 2
             };
             let w = width as f64;
-            bytes = bytes.max(BASE_BYTES + BYTES_PER_CELL_STEP * steps * w);
-            cell_steps += steps * w;
+            (
+                BASE_BYTES + BYTES_PER_CELL_STEP * steps * w,
+                steps * w,
+                width,
+            )
+        };
+        let b = edge_by(self.end);
+        let mut bytes = 0.0f64;
+        let mut cell_steps = 0.0;
+        let (mut steps0, mut width0) = (0, 0);
+        for level in 0..self.levels.max(1) {
+            let dx = self.dx * (1u64 << level) as f64;
+            let steps = (self.end / (self.kappa * dx)).ceil().max(1.0);
+            let (need, cells, width) = march(dx, steps, b);
+            bytes = bytes.max(need);
+            cell_steps += cells;
             if level == 0 {
                 steps0 = steps as usize;
                 width0 = width;
+            }
+            // the start's grids (`docs/impact.md`, section 11): grid j runs at most to the
+            // finest level's START_STEPS steps of that grid
+            if self.starts_finer() {
+                let dt0 = self.kappa * self.start_grid.unwrap_or(self.dx);
+                for j in 1..=self.start_halvings.min(40) {
+                    let scale = 0.5f64.powi(j as i32);
+                    let until = (dt0 * START_STEPS as f64 * scale).min(self.end);
+                    let (dxj, dtj) = (dx * scale, self.kappa * dx * scale);
+                    let (need, cells, _) =
+                        march(dxj, (until / dtj).ceil().max(1.0), edge_by(until));
+                    bytes = bytes.max(need);
+                    cell_steps += cells;
+                }
             }
         }
         CostEstimate {

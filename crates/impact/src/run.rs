@@ -47,9 +47,13 @@ impl<T: Scalar> Run<T> {
     /// [`EDGE_WINDOW_STEPS`] steps, narrowed to stay symmetric within the steps whose edges
     /// the pressures set), which averages out the edge's phase error within its cell; where
     /// the window holds fewer than five edges, the edges of the two steps around t_n
-    /// interpolated.
+    /// interpolated. A step marched on a finer grid reports that grid's edge
+    /// ([`StepState::finer`]).
     pub fn edge_at(&self, n: usize) -> Option<T> {
         let s = self.step(n)?;
+        if let Some((b, _)) = s.finer {
+            return Some(b);
+        }
         if s.edge_time == s.t {
             return Some(s.b);
         }
@@ -144,8 +148,12 @@ impl<T: Scalar> Run<T> {
     /// t_n of the least-squares quadratic through the steps' forces over a window of
     /// [`EDGE_CROSSINGS`] cell crossings (at most [`FORCE_WINDOW_STEPS`] steps, symmetric
     /// within the steps in contact); where that window holds fewer than five steps,
-    /// [`Run::force_interpolated`].
+    /// [`Run::force_interpolated`]. A step marched on a finer grid reports that grid's
+    /// force ([`StepState::finer`]).
     pub fn force_at(&self, n: usize) -> Option<T> {
+        if let Some((_, f)) = self.step(n)?.finer {
+            return Some(f);
+        }
         let dt = self.dt;
         self.crossing_fit(
             n,
@@ -195,6 +203,7 @@ mod tests {
                     ws: Vec::new(),
                     work: 0.0,
                     striker_work: 0.0,
+                    finer: None,
                 }
             })
             .collect();

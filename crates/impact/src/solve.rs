@@ -9,7 +9,7 @@ use lamb::HalfPlane;
 
 use crate::case::{Drive, ImpactCase, Stop};
 use crate::error::{invalid, ImpactError, Result};
-use crate::march::March;
+use crate::march::{merge_onto_coarser, EdgeLaw, March, StepState};
 use crate::profile::Profile;
 use crate::run::Run;
 use crate::scalar::Scalar;
@@ -23,6 +23,25 @@ use crate::tables::Tables;
 /// (`ImpactCase::check_stiffness`, a refusal of the solve): above 1 the trapezoidal factor (1 - r)/(1 + r) of the
 /// striker's relaxation changes sign.
 pub const STIFF_RATIO: f64 = 1.0;
+
+/// The contact's span, in cells of the next coarser grid, at which a finer start hands over
+/// to it ([`ImpactCase::start_halvings`], `docs/impact.md`, section 11).
+pub const START_CELLS: usize = 24;
+
+/// The default of [`ImpactCase::start_halvings`]: the first steps of every level on cells 64
+/// times finer (`docs/impact.md`, section 11).
+pub const START_HALVINGS: usize = 6;
+
+/// The most steps of one finer grid of the start ([`ImpactCase::start_halvings`]): it hands
+/// over after as many steps at the latest (a fast edge that does not slow down, a contact
+/// that stays narrow), which bounds the start's cost.
+pub const START_STEPS: usize = 16 * START_CELLS;
+
+/// The edge speed, in Rayleigh speeds, below which a finer grid of the start hands over
+/// ([`ImpactCase::start_halvings`]): under it the coarser grid's edge model is accurate from
+/// the first step (between it and the sub-cell model's limit
+/// `FREE_EDGE_SPEED` the edge's error on a coarse grid is several times larger, section 11).
+pub const START_EDGE_SPEED: f64 = 0.5;
 
 /// Where a march stands ([`ImpactCase::solve_reporting`]).
 #[derive(Clone, Copy, Debug)]
@@ -72,6 +91,92 @@ impl ImpactCase {
     /// widest contact, its speed relaxes with the time m0/(2 rho c1 b), and the step's
     /// constant force advances it by the trapezoidal factor (1 - r)/(1 + r),
     /// r = dt rho c1 b/m0, which turns negative, a spurious bounce, for r > 1.
+    /// Whether the levels start on finer grids ([`ImpactCase::start_halvings`]): for a rigid
+    /// striker of a curved profile under Signorini's law (`docs/impact.md`, section 11).
+    pub fn starts_finer(&self) -> bool {
+        self.start_halvings > 0
+            && matches!(self.striker, Striker::Rigid)
+            && matches!(self.law, EdgeLaw::Signorini)
+            && !matches!(self.profile, Profile::Flat { .. })
+    }
+
+    /// The first steps of a level's march on (dx, dt), marched on grids 2, 4, ..., 2^depth
+    /// times finer and merged onto it (`docs/impact.md`, section 11). The grid of stage j
+    /// (dx/2^j) hands over to stage j - 1 once its edge is slower than the sub-cell edge
+    /// model's limit and the contact spans [`START_CELLS`] cells of the finest level's grid of
+    /// stage j - 1 (`finest`: that level's dx and dt, or [`ImpactCase::start_grid`]'s), or at
+    /// the latest after
+    /// [`START_STEPS`] of that grid's steps, or after `most` steps of this level, or when the
+    /// striker has left. The hand-over times are the same for every level, so that at every
+    /// time the levels' grids stand in the ratio of their dx (the levels' differences keep
+    /// measuring the error).
+    #[allow(clippy::too_many_arguments)]
+    fn fine_start<T: Scalar + CachedRules>(
+        &self,
+        tables: &mut Tables<T>,
+        (dx, dt): (T, T),
+        finest: (f64, f64),
+        stage: usize,
+        depth: usize,
+        most: usize,
+        gap_scale: Option<T>,
+    ) -> Result<Vec<StepState<T>>> {
+        if stage > depth || most == 0 {
+            return Ok(Vec::new());
+        }
+        let (fdx, fdt) = (dx * 0.5, dt * 0.5);
+        let seeds = self.fine_start(
+            &mut *tables,
+            (fdx, fdt),
+            finest,
+            stage + 1,
+            depth,
+            2 * most,
+            gap_scale,
+        )?;
+        let slow_below = *tables.half_plane().s_r() * START_EDGE_SPEED;
+        let mut march = March::new(
+            &mut *tables,
+            None,
+            &self.profile,
+            &self.drive,
+            self.law,
+            fdx,
+            fdt,
+        )
+        .with_edge_gap_scale(gap_scale)
+        .with_memory_limit(self.memory_limit);
+        for s in seeds {
+            march.seed(s)?;
+        }
+        let scale = 0.5f64.powi(stage as i32);
+        let wide = finest.0 * START_CELLS as f64 * scale * 2.0;
+        let until = finest.1 * START_STEPS as f64 * scale;
+        loop {
+            let n = march.steps.len();
+            if n > 0 && n % 2 == 0 {
+                let last = &march.steps[n - 1];
+                // the edge slow enough for the coarser grid's edge model, and wide
+                let slow = crate::march::recent_edge_speed(&march.steps, fdt) < slow_below;
+                let spans = slow && last.b.to_f64() >= wide;
+                let late = last.t.to_f64() >= until * (1.0 - 1e-9);
+                if spans || late || n >= 2 * most || march.separated() {
+                    break;
+                }
+            }
+            march.step()?;
+        }
+        let run = Run {
+            dx: fdx,
+            dt: fdt,
+            steps: std::mem::take(&mut march.steps),
+            separations: Vec::new(),
+            reimpacts: Vec::new(),
+            coefficient_error: 0.0,
+        };
+        Ok(merge_onto_coarser(&run, dt))
+    }
+
     fn check_stiffness<T: Scalar>(&self, fine: &Run<T>) -> Result<()> {
         let Drive::Free { mass_ratio, .. } = self.drive else {
             return Ok(());
@@ -234,6 +339,24 @@ impl ImpactCase {
                 }
                 _ => None,
             };
+            // the start on finer grids, merged onto this one (`docs/impact.md`, section 11)
+            let seeds = if self.starts_finer() {
+                let most = target.map_or(cap_steps, |(n, _)| n.min(cap_steps));
+                self.fine_start(
+                    &mut *tables,
+                    (grid_dx, dt),
+                    match self.start_grid {
+                        Some(g) => (g, g * self.kappa),
+                        None => (level_dx(0).to_f64(), level_dt(0).to_f64()),
+                    },
+                    1,
+                    self.start_halvings,
+                    most,
+                    self.edge_gap_scale(m64).map(T::of),
+                )?
+            } else {
+                Vec::new()
+            };
             let mut march = March::new(
                 &mut *tables,
                 own.as_mut()
@@ -253,7 +376,10 @@ impl ImpactCase {
             }
             let weight = 0.25f64.powi(level as i32) / total;
             let mut goal = target.map(|(n, _)| n);
-            let mut n = 0usize;
+            let mut n = seeds.len();
+            for s in seeds {
+                march.seed(s)?;
+            }
             loop {
                 match goal {
                     Some(g) if n >= g => {

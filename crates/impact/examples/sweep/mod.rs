@@ -139,6 +139,8 @@ pub fn compare(base: &ImpactCase, dx: f64) -> (SolvedImpact, Vec<HistoryRow>, Ve
         let mut c = base.clone();
         c.dx = d;
         c.levels = 1;
+        // refined at every time: the start hands over on the schedule of dx
+        c.start_grid = Some(dx);
         c.solve(|_| {}).expect("the reference solves").history().0
     };
     let (r4, r2) = (reference(dx / 4.0), reference(dx / 2.0));

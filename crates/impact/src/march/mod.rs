@@ -13,6 +13,7 @@ use crate::error::{ImpactError, Result};
 use crate::history::{HistorySum, KernelRows};
 use crate::linalg::{least_index_pivoting, Factor};
 use crate::profile::Profile;
+use crate::run::Run;
 use crate::scalar::Scalar;
 use crate::tables::{ShapeRules, Tables};
 
@@ -59,6 +60,10 @@ pub struct StepState<T = f64> {
     pub work: T,
     /// Work done on the striker's deformation up to t_n (its strain and vibration energy).
     pub striker_work: T,
+    /// For a step marched on a finer grid and merged onto this one (`docs/impact.md`,
+    /// section 11): the finer grid's reported edge and force at t_n, which
+    /// [`crate::run::Run::edge_at`] and [`crate::run::Run::force_at`] report as they are.
+    pub finer: Option<(T, T)>,
 }
 
 /// The marching state on one grid, at the precision T (`crate::scalar`).
@@ -566,8 +571,25 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             ws,
             work,
             striker_work,
+            finer: None,
         });
         Ok(in_contact)
+    }
+
+    /// Takes step n + 1 as solved on a finer grid and merged onto this one
+    /// ([`merge_onto_coarser`], `docs/impact.md`, section 11): its pressures enter the history
+    /// sums as if marched, its state is the next step's start.
+    pub(crate) fn seed(&mut self, s: StepState<T>) -> Result<()> {
+        self.tables.ensure(2 * s.pressure.len() + 2, 0)?;
+        self.history.push(&mut *self.tables, &s.pressure)?;
+        if let (Some(k), Some(hs)) = (self.striker.as_deref_mut(), self.striker_history.as_mut()) {
+            hs.push(k, &s.pressure)?;
+        }
+        if s.pressure.is_empty() && self.steps.last().is_some_and(|p| !p.pressure.is_empty()) {
+            self.separations.push(s.t - self.dt);
+        }
+        self.steps.push(s);
+        Ok(())
     }
 
     /// The contact among whole cells (`docs/impact.md`, section 9): the linear
@@ -672,4 +694,76 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         }
         Some(s * 0.5)
     }
+}
+
+/// The means over `len` cells of a grid twice as coarse of a field given by its means over
+/// the cells of width dx/2 (cell 0 centred on x = 0, the field even, zero beyond `fine`):
+/// the coarse cell J covers the fine cell 2J and the halves of 2J - 1 and 2J + 1.
+fn coarse_means<T: Scalar>(fine: &[T], len: usize) -> Vec<T> {
+    let at = |i: usize| fine.get(i).copied().unwrap_or(T::of(0.0));
+    (0..len)
+        .map(|j| {
+            if j == 0 {
+                (at(0) + at(1)) * 0.5
+            } else {
+                (at(2 * j - 1) * 0.5 + at(2 * j) + at(2 * j + 1) * 0.5) * 0.5
+            }
+        })
+        .collect()
+}
+
+/// The steps of a march on cells dx/2 and steps dt/2 (an even number of them) merged onto
+/// the grid dx, dt (`docs/impact.md`, section 11): coarse step n holds the means of the fine
+/// pressures over its cells and over the fine steps 2n - 1 and 2n (the impulse of every cell
+/// and step kept exactly), the displacements of fine step 2n over its cells, and fine step
+/// 2n's penetration, speed and work. Its edge is the fine run's at the middle of the step
+/// (so that the edge reports of the coarse steps marched after it fit through it), and it
+/// keeps the fine run's reports at t_n ([`StepState::finer`]).
+pub(crate) fn merge_onto_coarser<T: Scalar>(fine: &Run<T>, dt: T) -> Vec<StepState<T>> {
+    let edge = |n: usize| fine.edge_at(n).unwrap_or(fine.steps[n - 1].b);
+    let force = |n: usize| fine.force_at(n).unwrap_or(fine.steps[n - 1].force);
+    let fine = &fine.steps;
+    let zero = T::of(0.0);
+    (1..=fine.len() / 2)
+        .map(|n| {
+            let (a, b) = (&fine[2 * n - 2], &fine[2 * n - 1]);
+            let cells = a.pressure.len().max(b.pressure.len());
+            // coarse cells reaching the last fine contact cell
+            let len = if cells == 0 { 0 } else { cells / 2 + 1 };
+            let pa = coarse_means(&a.pressure, len);
+            let pb = coarse_means(&b.pressure, len);
+            let mut pressure: Vec<T> = pa.iter().zip(&pb).map(|(x, y)| (*x + *y) * 0.5).collect();
+            // the displacements at t_n: they meet the contact conditions, so that the work
+            // of the steps marched after them balances the striker's energy
+            let w = coarse_means(&b.w, b.w.len().saturating_sub(1) / 2);
+            let ws = coarse_means(&b.ws, b.ws.len().saturating_sub(1) / 2);
+            while pressure.last().is_some_and(|v| *v == 0.0) {
+                pressure.pop();
+            }
+            let t = dt * n as f64;
+            let pressure_empty = pressure.is_empty();
+            StepState {
+                t,
+                h: b.h,
+                v: b.v,
+                k: pressure.len().saturating_sub(1),
+                b: if pressure.is_empty() {
+                    zero
+                } else {
+                    edge(2 * n - 1)
+                },
+                edge_time: t - dt * 0.5,
+                force: (a.force + b.force) * 0.5,
+                pressure,
+                w,
+                ws,
+                work: b.work,
+                striker_work: b.striker_work,
+                finer: Some((
+                    if pressure_empty { zero } else { edge(2 * n) },
+                    force(2 * n),
+                )),
+            }
+        })
+        .collect()
 }

@@ -143,6 +143,8 @@ fn energy_balance_through_the_kernels() {
         .map(|&dx| {
             let mut case = free_parabola(0.3, 10.0, 0.01, 6.0, dx);
             case.levels = 1;
+            // refined at every time: the start on the coarser run's schedule
+            case.start_grid = Some(0.02);
             let sol = case.solve(|_| {}).unwrap();
             let (rows, _) = sol.history();
             let ke0 = 0.5 * 10.0 * 0.01f64.powi(2);
