@@ -4,8 +4,11 @@
 //!   law) at each DX against one grid at REF, the largest error of b, h and the force over
 //!   c1 t/R in [0.5, 2), [2, 5), [5, 7.5), [7.5, 10) relative to each one's peak, b as
 //!   reported (`RAW=1`: the per-step edges interpolated to t_n; `KAPPA=K`: another time step;
-//!   `LAW=kinematic`: the kinematic law; `WINDOWS=0.02:0.1,0.1:0.5`: other ranges;
-//!   `START=K`, `REF_START=K`: the start on grids 2^K times finer (`START_GRID=DX`: every run's start on the hand-over schedule of DX); `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at t_n and per step, and the force's in 1e-6 of its peak).
+//!   `LAW=kinematic`: the kinematic law; `DRIVEN=V`: the parabola driven at V/c1; `END=T`:
+//!   another end; `WINDOWS=0.02:0.1,0.1:0.5`: other ranges; `START=K`, `REF_START=K`: the
+//!   start on grids 2^K times finer, `START_GRID=DX`: every run's start on the hand-over
+//!   schedule of DX; `SERIES=T0,T1,EVERY` also prints b's error step by step, in 1e-6 R, at
+//!   t_n and per step, and the force's in 1e-6 of its peak).
 //!
 //! The slowly driven parabola against Hertz's edge and the driven wedge's edge against the
 //! wedge crate are the tests `slow_free_edge_follows_hertz` (`tests/suite/physics.rs`) and
@@ -19,6 +22,12 @@ fn single(dx: f64, start: usize, grid: Option<f64>) -> (impact::run::Run, f64) {
         _ => EdgeLaw::Signorini,
     };
     let mut case = ImpactCase::reference(law);
+    if let Ok(v) = std::env::var("DRIVEN") {
+        case.drive = impact::Drive::Speed(v.parse().expect("a speed V/c1"));
+    }
+    if let Ok(end) = std::env::var("END") {
+        case.end = end.parse().expect("an end time");
+    }
     case.dx = dx;
     case.levels = 1;
     case.start_halvings = start;

@@ -107,7 +107,8 @@ impl ImpactCase {
     /// stage j - 1 (`finest`: that level's dx and dt, or [`ImpactCase::start_grid`]'s), or at
     /// the latest after
     /// [`START_STEPS`] of that grid's steps, or after `most` steps of this level, or when the
-    /// striker has left. The hand-over times are the same for every level, so that at every
+    /// striker has left; not within [`crate::run::FORCE_WINDOW_STEPS`] steps of the finest
+    /// level's grid of stage j before the level's end (it then goes on to the end). The hand-over times are the same for every level, so that at every
     /// time the levels' grids stand in the ratio of their dx (the levels' differences keep
     /// measuring the error).
     #[allow(clippy::too_many_arguments)]
@@ -152,6 +153,10 @@ impl ImpactCase {
         let scale = 0.5f64.powi(stage as i32);
         let wide = finest.0 * START_CELLS as f64 * scale * 2.0;
         let until = finest.1 * START_STEPS as f64 * scale;
+        // the report window of the finest level's grid of this stage, in time (the same on
+        // every level), and this level's end
+        let room_after = finest.1 * crate::run::FORCE_WINDOW_STEPS as f64 * scale;
+        let end = dt.to_f64() * most as f64 * (1.0 - 1e-9);
         loop {
             let n = march.steps.len();
             if n > 0 && n % 2 == 0 {
@@ -160,11 +165,23 @@ impl ImpactCase {
                 let slow = crate::march::recent_edge_speed(&march.steps, fdt) < slow_below;
                 let spans = slow && last.b.to_f64() >= wide;
                 let late = last.t.to_f64() >= until * (1.0 - 1e-9);
-                if spans || late || n >= 2 * most || march.separated() {
+                // not within a report window of the level's end (the coarser grid's first
+                // steps would set the last reports alone): this grid goes on to the end
+                let room = last.t.to_f64() + room_after <= end;
+                if (room && (spans || late)) || n >= 2 * most || march.separated() {
                     break;
                 }
             }
             march.step()?;
+        }
+        // a few steps past the hand-over, so that the finer run's reports of the steps handed
+        // over take their whole windows (`Run::force_at`: at most half of
+        // FORCE_WINDOW_STEPS after the step), not the one-sided fits of a run's end
+        let handed = march.steps.len();
+        if handed < 2 * most && !march.separated() {
+            for _ in 0..crate::run::FORCE_WINDOW_STEPS / 2 {
+                march.step()?;
+            }
         }
         let run = Run {
             dx: fdx,
@@ -174,7 +191,7 @@ impl ImpactCase {
             reimpacts: Vec::new(),
             coefficient_error: 0.0,
         };
-        Ok(merge_onto_coarser(&run, dt))
+        Ok(merge_onto_coarser(&run, handed, dt))
     }
 
     fn check_stiffness<T: Scalar>(&self, fine: &Run<T>) -> Result<()> {

@@ -712,19 +712,23 @@ fn coarse_means<T: Scalar>(fine: &[T], len: usize) -> Vec<T> {
         .collect()
 }
 
-/// The steps of a march on cells dx/2 and steps dt/2 (an even number of them) merged onto
-/// the grid dx, dt (`docs/impact.md`, section 11): coarse step n holds the means of the fine
+/// The first `handed` steps (an even number) of a march on cells dx/2 and steps dt/2 merged
+/// onto the grid dx, dt (`docs/impact.md`, section 11): coarse step n holds the means of the fine
 /// pressures over its cells and over the fine steps 2n - 1 and 2n (the impulse of every cell
 /// and step kept exactly), the displacements of fine step 2n over its cells, and fine step
 /// 2n's penetration, speed and work. Its edge is the fine run's at the middle of the step
 /// (so that the edge reports of the coarse steps marched after it fit through it), and it
 /// keeps the fine run's reports at t_n ([`StepState::finer`]).
-pub(crate) fn merge_onto_coarser<T: Scalar>(fine: &Run<T>, dt: T) -> Vec<StepState<T>> {
+pub(crate) fn merge_onto_coarser<T: Scalar>(
+    fine: &Run<T>,
+    handed: usize,
+    dt: T,
+) -> Vec<StepState<T>> {
     let edge = |n: usize| fine.edge_at(n).unwrap_or(fine.steps[n - 1].b);
     let force = |n: usize| fine.force_at(n).unwrap_or(fine.steps[n - 1].force);
     let fine = &fine.steps;
     let zero = T::of(0.0);
-    (1..=fine.len() / 2)
+    (1..=handed.min(fine.len()) / 2)
         .map(|n| {
             let (a, b) = (&fine[2 * n - 2], &fine[2 * n - 1]);
             let cells = a.pressure.len().max(b.pressure.len());
