@@ -136,6 +136,7 @@ impl ImpactCase {
             gap_scale,
         )?;
         let slow_below = *tables.half_plane().s_r() * START_EDGE_SPEED;
+        let scale = 0.5f64.powi(stage as i32);
         let mut march = March::new(
             &mut *tables,
             None,
@@ -150,7 +151,6 @@ impl ImpactCase {
         for s in seeds {
             march.seed(s)?;
         }
-        let scale = 0.5f64.powi(stage as i32);
         let wide = finest.0 * START_CELLS as f64 * scale * 2.0;
         let until = finest.1 * START_STEPS as f64 * scale;
         // the report window of the finest level's grid of this stage, in time (the same on
@@ -175,11 +175,17 @@ impl ImpactCase {
             march.step()?;
         }
         // a few steps past the hand-over, so that the finer run's reports of the steps handed
-        // over take their whole windows (`Run::force_at`: at most half of
-        // FORCE_WINDOW_STEPS after the step), not the one-sided fits of a run's end
+        // over take their whole windows (`Run::force_at`: half of EDGE_CROSSINGS cell
+        // crossings of the edge, at most half of FORCE_WINDOW_STEPS, after the step), not the
+        // one-sided fits of a run's end
         let handed = march.steps.len();
         if handed < 2 * most && !march.separated() {
-            for _ in 0..crate::run::FORCE_WINDOW_STEPS / 2 {
+            let speed = crate::march::recent_edge_speed(&march.steps, fdt)
+                .abs()
+                .to_f64();
+            let crossings = crate::run::EDGE_CROSSINGS * (fdx / fdt).to_f64() / speed.max(1e-300);
+            let window = crossings.min(crate::run::FORCE_WINDOW_STEPS as f64);
+            for _ in 0..(0.5 * window).ceil() as usize + 2 {
                 march.step()?;
             }
         }
