@@ -86,11 +86,6 @@ macro_rules! solvable {
 solvable!(f64, complexfn::Dd);
 
 impl ImpactCase {
-    /// Refuses a free striker whose deceleration the finest time step does not resolve
-    /// (`docs/impact.md`, section 9): against the plane-wave impedance rho c1 2b of its
-    /// widest contact, its speed relaxes with the time m0/(2 rho c1 b), and the step's
-    /// constant force advances it by the trapezoidal factor (1 - r)/(1 + r),
-    /// r = dt rho c1 b/m0, which turns negative, a spurious bounce, for r > 1.
     /// Whether the levels start on finer grids ([`ImpactCase::start_halvings`]): for a rigid
     /// striker of a curved profile under Signorini's law (`docs/impact.md`, section 11).
     pub fn starts_finer(&self) -> bool {
@@ -102,15 +97,15 @@ impl ImpactCase {
 
     /// The first steps of a level's march on (dx, dt), marched on grids 2, 4, ..., 2^depth
     /// times finer and merged onto it (`docs/impact.md`, section 11). The grid of stage j
-    /// (dx/2^j) hands over to stage j - 1 once its edge is slower than the sub-cell edge
-    /// model's limit and the contact spans [`START_CELLS`] cells of the finest level's grid of
-    /// stage j - 1 (`finest`: that level's dx and dt, or [`ImpactCase::start_grid`]'s), or at
-    /// the latest after
-    /// [`START_STEPS`] of that grid's steps, or after `most` steps of this level, or when the
-    /// striker has left; not within [`crate::run::FORCE_WINDOW_STEPS`] steps of the finest
-    /// level's grid of stage j before the level's end (it then goes on to the end). The hand-over times are the same for every level, so that at every
-    /// time the levels' grids stand in the ratio of their dx (the levels' differences keep
-    /// measuring the error).
+    /// (dx/2^j) hands over to stage j - 1 once its edge is slower than [`START_EDGE_SPEED`]
+    /// c_R and the contact spans [`START_CELLS`] cells of the finest level's grid of stage
+    /// j - 1 (`finest`: that level's dx and dt, or [`ImpactCase::start_grid`]'s), or at the
+    /// latest after [`START_STEPS`] of that grid's steps, or after `most` steps of this level,
+    /// or when the striker has left; not within [`crate::run::FORCE_WINDOW_STEPS`] steps of
+    /// the finest level's grid of stage j before the level's end (it then goes on to the
+    /// end). The hand-over times are the same for every level, so that at every time the
+    /// levels' grids stand in the ratio of their dx (the levels' differences keep measuring
+    /// the error).
     #[allow(clippy::too_many_arguments)]
     fn fine_start<T: Scalar + CachedRules>(
         &self,
@@ -200,6 +195,11 @@ impl ImpactCase {
         Ok(merge_onto_coarser(&run, handed, dt))
     }
 
+    /// Refuses a free striker whose deceleration the finest time step does not resolve
+    /// (`docs/impact.md`, section 9): against the plane-wave impedance rho c1 2b of its
+    /// widest contact, its speed relaxes with the time m0/(2 rho c1 b), and the step's
+    /// constant force advances it by the trapezoidal factor (1 - r)/(1 + r),
+    /// r = dt rho c1 b/m0, which turns negative, a spurious bounce, for r > 1.
     fn check_stiffness<T: Scalar>(&self, fine: &Run<T>) -> Result<()> {
         let Drive::Free { mass_ratio, .. } = self.drive else {
             return Ok(());
