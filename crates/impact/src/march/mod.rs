@@ -745,17 +745,13 @@ pub(crate) fn merge_onto_coarser<T: Scalar>(
                 pressure.pop();
             }
             let t = dt * n as f64;
-            let pressure_empty = pressure.is_empty();
+            let in_contact = !pressure.is_empty();
             StepState {
                 t,
                 h: b.h,
                 v: b.v,
                 k: pressure.len().saturating_sub(1),
-                b: if pressure.is_empty() {
-                    zero
-                } else {
-                    edge(2 * n - 1)
-                },
+                b: if in_contact { edge(2 * n - 1) } else { zero },
                 edge_time: t - dt * 0.5,
                 force: (a.force + b.force) * 0.5,
                 pressure,
@@ -763,10 +759,7 @@ pub(crate) fn merge_onto_coarser<T: Scalar>(
                 ws,
                 work: b.work,
                 striker_work: b.striker_work,
-                finer: Some((
-                    if pressure_empty { zero } else { edge(2 * n) },
-                    force(2 * n),
-                )),
+                finer: Some((if in_contact { edge(2 * n) } else { zero }, force(2 * n))),
             }
         })
         .collect()
