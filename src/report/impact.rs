@@ -458,8 +458,13 @@ impl RunReport {
                 .map(|c| {
                     let model = match c.key {
                         "h_over_R" => m.h,
+                        "hdot_over_v0" | "hdot_over_c1" | "kinetic_energy_over_rho_c1sq_Rsq" => {
+                            m.hdot
+                        }
                         "b_over_R" => m.b,
                         "force_over_rho_c1sq_R" => m.force,
+                        "work_over_rho_c1sq_Rsq" => m.work,
+                        "energy_defect" => m.energy_defect,
                         _ => m.others,
                     };
                     (c.key, model)

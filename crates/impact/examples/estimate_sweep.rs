@@ -36,20 +36,21 @@ fn main() {
             continue;
         }
         let (sol, _, compared) = compare(&base, dx);
-        // each level's value at report row i (the levels share the report times)
-        let dtr = sol.report_dt();
-        let level_value = |l: usize, qi: usize, i: usize| -> f64 {
-            let r = &sol.runs[l];
-            let n = (i + 1) * (dtr / r.dt).round().max(1.0) as usize;
-            let v = match qi {
-                0 => r.step(n).map(|s| s.h),
-                1 => r.edge_at(n),
-                2 => r.force_at(n),
-                _ => None,
-            };
-            // the force is reported over rho c1^2 R = mu R/m^2
-            let scale = if qi == 2 { sol.m * sol.m } else { 1.0 };
-            v.map_or(f64::NAN, |v| v * scale)
+        // each level's reported histories on its own (a one-level solution of its run),
+        // matched to the report rows by time
+        let levels: Vec<Vec<impact::HistoryRow>> = (0..sol.runs.len())
+            .map(|l| {
+                let mut one = sol.clone();
+                one.runs = vec![sol.runs[l].clone()];
+                one.history().0
+            })
+            .collect();
+        let level_value = |l: usize, qi: usize, t: f64| -> f64 {
+            levels[l]
+                .iter()
+                .find(|r| (r.t - t).abs() < 1e-9)
+                .and_then(|r| PICKS[qi].1(r))
+                .map_or(f64::NAN, |v| v.value)
         };
         for (qi, (q, _)) in PICKS.iter().enumerate() {
             let (mut ratios, mut rel) = (Vec::new(), Vec::new());
@@ -58,7 +59,7 @@ fn main() {
                 let (value, stated, t4, t2) = c.q[qi];
                 let Some(err) = stated else { continue };
                 if let Some(f) = raw.as_mut() {
-                    let lv: Vec<f64> = (0..3).map(|l| level_value(l, qi, c.i)).collect();
+                    let lv: Vec<f64> = (0..3).map(|l| level_value(l, qi, c.t)).collect();
                     writeln!(
                         f,
                         "{name},{q},{},{},{},{},{err},{t4},{t2}",

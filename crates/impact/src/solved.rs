@@ -76,29 +76,61 @@ impl ErrorModel {
 }
 
 /// The sharp estimator's safety factor and order cap for one history (`docs/impact.md`,
-/// section 5): the smallest round factors that keep the ratio of the actual error to the
-/// stated one below 0.8 over the twelve-case sweep at dx = R/100 and R/200.
+/// section 5).
 #[derive(Clone, Copy, Debug)]
 struct SharpPolicy {
     safety: f64,
     order_cap: f64,
 }
 
-/// The policies of h, b and the force: b's error carries the edge's phase across the cell
-/// crossings, which the level differences follow only loosely, so no order above one is
-/// credited; h and the force are smooth.
-const SHARP_H: SharpPolicy = SharpPolicy {
-    safety: 2.0,
-    order_cap: 1.0,
-};
-const SHARP_B: SharpPolicy = SharpPolicy {
-    safety: 2.0,
-    order_cap: 1.0,
-};
-const SHARP_FORCE: SharpPolicy = SharpPolicy {
-    safety: 3.5,
-    order_cap: 2.0,
-};
+const fn policy(safety: f64, order_cap: f64) -> Option<SharpPolicy> {
+    Some(SharpPolicy { safety, order_cap })
+}
+
+/// The policies of the runs outside the start on finer grids (a deformable striker, the flat
+/// punch, the kinematic law, or the start turned off): h, b and the force, the smallest round
+/// factors that kept the ratio of the actual error to the stated one below 0.8 over the
+/// twelve-case sweep at dx = R/100 and R/200 before the start. b's error carries the edge's
+/// phase across the cell crossings, which the level differences follow only loosely, so no
+/// order above one is credited; h and the force are smooth. The other histories take the
+/// conservative bound.
+fn plain_policy(q: usize) -> Option<SharpPolicy> {
+    match q {
+        Q_H => policy(2.0, 1.0),
+        Q_B => policy(2.0, 1.0),
+        Q_FORCE => policy(3.5, 2.0),
+        _ => None,
+    }
+}
+
+/// The policies of a rigid striker of a curved profile under Signorini's law with the start
+/// on finer grids ([`ImpactCase::starts_finer`], at least [`crate::solve::START_HALVINGS`]
+/// halvings): measured on the sweep's eight such cases at dx = R/100 and R/200 with the
+/// start, the smallest round factors that keep the ratio of actual to stated below 0.7
+/// (`docs/impact.md`, section 5). The start removes the early rows where the coarse levels
+/// resolved the contact worst, so h and the penetration speed (and with it the kinetic
+/// energy) are estimated within a factor two of their actual errors; b and the force keep a
+/// spread of about eight (the edge's phase across cell crossings); the work and the energy
+/// defect, once conservative, take the observed order too.
+fn started_policy(q: usize) -> Option<SharpPolicy> {
+    match q {
+        Q_H => policy(1.25, 1.5),
+        Q_HDOT => policy(1.5, 1.5),
+        Q_B => policy(5.5, 2.0),
+        Q_FORCE => policy(5.0, 2.0),
+        Q_WORK => policy(3.5, 1.5),
+        Q_DEFECT => policy(2.0, 1.5),
+        _ => None,
+    }
+}
+
+// the histories' indices in `SolvedImpact::history`'s samples
+const Q_H: usize = 0;
+const Q_HDOT: usize = 1;
+const Q_B: usize = 2;
+const Q_FORCE: usize = 3;
+const Q_DEFECT: usize = 6;
+const Q_WORK: usize = 7;
 
 /// Richardson's factor 1/(2^p - 1) for the order p (at least 1 when p is at most one).
 fn richardson_factor(p: f64) -> f64 {
@@ -249,11 +281,17 @@ pub struct Orders {
 pub struct Models {
     /// h's.
     pub h: ErrorModel,
+    /// The penetration speed's (and the kinetic energy's, formed from it).
+    pub hdot: ErrorModel,
     /// b's.
     pub b: ErrorModel,
     /// The force's.
     pub force: ErrorModel,
-    /// The other histories'.
+    /// The work on the half-plane's (never below the kinetic energy's estimate).
+    pub work: ErrorModel,
+    /// The energy defect's (under Signorini's law never below the defect itself).
+    pub energy_defect: ErrorModel,
+    /// The other histories' (the striker's deformation and energy).
     pub others: ErrorModel,
 }
 
@@ -511,8 +549,19 @@ impl<T: Scalar> SolvedImpact<T> {
                     .is_none_or(|b| b < coarsest.dx)
             })
             .collect();
-        let conservative_row =
-            |q: usize, i: usize| coarse_contact[i] || (q != 0 && i + 1 == times.len());
+        // with the start on finer grids every level resolves the early contact on the start's
+        // cells, so the coarse contact's rows keep the sharp estimate; there the work and the
+        // energy defect take the conservative bound at the first report time (the start's
+        // own first steps, whose defect the coarser levels see only merged)
+        let started =
+            self.case.starts_finer() && self.case.start_halvings >= crate::solve::START_HALVINGS;
+        let conservative_row = |q: usize, i: usize| {
+            if started {
+                (i == 0 && (q == Q_WORK || q == Q_DEFECT)) || (q != Q_H && i + 1 == times.len())
+            } else {
+                coarse_contact[i] || (q != Q_H && i + 1 == times.len())
+            }
+        };
         // the rows whose free edge is captured cell by cell (`docs/impact.md`, section 4):
         // faster than FREE_EDGE_SPEED c_R (below c1), or everywhere without the edge model;
         // there the levels may agree on an edge a fraction of a cell off, and b's estimate
@@ -543,14 +592,13 @@ impl<T: Scalar> SolvedImpact<T> {
                 .collect()
         };
         let half_cell = 0.5 * fine.dx.to_f64();
-        // the sharp estimator of h, b and the force where three levels show an order
+        // the sharp estimator where three levels show an order and the sweep measured it
         let sharp = |q: usize| -> Option<(SharpPolicy, f64)> {
-            let policy = match q {
-                0 => SHARP_H,
-                2 => SHARP_B,
-                3 => SHARP_FORCE,
-                _ => return None,
-            };
+            let policy = if started {
+                started_policy(q)
+            } else {
+                plain_policy(q)
+            }?;
             let p = ords[q].filter(|p| *p > ORDER_SHOWN)?;
             Some((policy, p.min(policy.order_cap)))
         };
@@ -575,7 +623,7 @@ impl<T: Scalar> SolvedImpact<T> {
             if !d.is_finite() {
                 return None;
             }
-            let floor = if q == 2 && whole_cell_edge[i] {
+            let floor = if q == Q_B && whole_cell_edge[i] {
                 half_cell
             } else {
                 0.0
@@ -591,7 +639,7 @@ impl<T: Scalar> SolvedImpact<T> {
             |q: usize| (0..times.len()).filter(|&i| conservative_row(q, i)).count();
         let cell_floor_rows = whole_cell_edge.iter().filter(|c| **c).count();
         let model = |q: usize| -> ErrorModel {
-            let cell_floor_rows = if q == 2 { cell_floor_rows } else { 0 };
+            let cell_floor_rows = if q == Q_B { cell_floor_rows } else { 0 };
             // the sharp estimator where at least one row took it
             match sharp(q).filter(|_| conservative_rows(q) < times.len()) {
                 Some((policy, p)) => ErrorModel {
@@ -611,9 +659,12 @@ impl<T: Scalar> SolvedImpact<T> {
             }
         };
         let models = (self.runs.len() >= 2).then(|| Models {
-            h: model(0),
-            b: model(2),
-            force: model(3),
+            h: model(Q_H),
+            hdot: model(Q_HDOT),
+            b: model(Q_B),
+            force: model(Q_FORCE),
+            work: model(Q_WORK),
+            energy_defect: model(Q_DEFECT),
             others: ErrorModel::conservative(times.len()),
         });
         let mut rows = Vec::with_capacity(times.len());

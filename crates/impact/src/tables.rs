@@ -41,7 +41,12 @@ const RULE_FINE: usize = 24;
 const SMOOTH_FINE: usize = 7;
 
 /// Gauss-Legendre rules on [-1, 1] for pieces clustered at their ends and for smooth pieces.
-pub(crate) type ShapeRules<'r, T = f64> = (&'r [(T, T)], &'r [(T, T)]);
+/// With them, the far cells' kernel rows by distance (`march::far_kernel_row`).
+pub(crate) type ShapeRules<'r, T = f64> = (
+    &'r [(T, T)],
+    &'r [(T, T)],
+    &'r [[T; crate::march::FAR_SERIES]],
+);
 
 /// The normalised coefficients a(k, l) (dx = 1), grown on demand in k and l.
 pub struct Tables<T = f64> {
@@ -58,6 +63,9 @@ pub struct Tables<T = f64> {
     /// The Gauss-Legendre rules on [-1, 1] of the shape correction.
     fine: std::sync::Arc<Vec<(T, T)>>,
     smooth_fine: std::sync::Arc<Vec<(T, T)>>,
+    /// The shape defect's far-cell kernel, row d for a source cell d cells beyond the
+    /// receiving one (`march::far_kernel_row`), grown with the coefficients.
+    far_kernel: Vec<[T; crate::march::FAR_SERIES]>,
 }
 
 impl<T: Scalar + CachedRules> Tables<T> {
@@ -73,6 +81,7 @@ impl<T: Scalar + CachedRules> Tables<T> {
             fine: gauss_legendre_rule::<T>(RULE_FINE, T::BITS).map_err(lamb::LambError::from)?,
             smooth_fine: gauss_legendre_rule::<T>(SMOOTH_FINE, T::BITS)
                 .map_err(lamb::LambError::from)?,
+            far_kernel: Vec::new(),
         })
     }
 
@@ -84,7 +93,7 @@ impl<T: Scalar + CachedRules> Tables<T> {
     /// The clustered and the smooth pieces' finer Gauss-Legendre rules on [-1, 1], shared with
     /// the march's shape correction of the free edge.
     pub(crate) fn shape_rules(&self) -> ShapeRules<'_, T> {
-        (&self.fine, &self.smooth_fine)
+        (&self.fine, &self.smooth_fine, &self.far_kernel)
     }
 
     /// The largest absolute error estimate of a normalised coefficient computed so far.
@@ -101,6 +110,10 @@ impl<T: Scalar + CachedRules> Tables<T> {
 
     /// Makes a(k, l) available for k <= kmax and l <= lmax.
     pub fn ensure(&mut self, kmax: usize, lmax: usize) -> Result<()> {
+        // the far kernel's rows for every distance within kmax + 1 cells (row 0 unused)
+        for d in self.far_kernel.len()..=kmax + 1 {
+            self.far_kernel.push(crate::march::far_kernel_row(d.max(1)));
+        }
         // Xi at j = 0 ..= kmax + 1
         let width = kmax + 2;
         while self.xi.len() < lmax + 2 {

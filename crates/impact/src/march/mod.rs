@@ -19,7 +19,7 @@ use crate::tables::{ShapeRules, Tables};
 
 mod edge;
 
-pub(crate) use edge::FREE_EDGE_SPEED;
+pub(crate) use edge::{far_kernel_row, FAR_SERIES, FREE_EDGE_SPEED};
 use edge::{SystemCache, TiedBasis};
 
 /// The edge law (labelled in every output); shared with the edge analysis of `lamb::edge`.
