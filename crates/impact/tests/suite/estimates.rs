@@ -1,6 +1,6 @@
 //! The histories' error estimates against the actual errors (`docs/impact.md`, section 5):
 //! six cases of the twelve-case sweep (`examples/estimate_sweep.rs`, whose full numbers the
-//! docs quote), on shorter runs, at dx = R/100 with three levels against one grid four times
+//! docs quote; four here, the two fast strikers in the explicit tier), on shorter runs, at dx = R/100 with three levels against one grid four times
 //! finer. The actual error is bounded by the difference from that grid plus its own error (its
 //! difference from the grid twice finer than dx).
 
@@ -12,27 +12,18 @@ mod sweep;
 use sweep::{cases, compare, median, PICKS};
 
 /// Every row of every history carries an estimate, the bound of the actual error never
-/// exceeds it, and the estimates are no more pessimistic than measured: over these shorter
-/// runs (their early part weighs more) the medians of actual/stated are 0.089 (h), 0.067 (b),
-/// 0.065 (the force), 0.059 (the penetration speed and the kinetic energy), 0.081 (the work)
-/// and 0.130 (the energy defect), held at three quarters of that (over the full sweep at
-/// R/100: 0.21, 0.070, 0.11, 0.16, 0.12 and 0.14; the aim is 0.1). The rigid strikers of
-/// curved profiles under Signorini's law take the policies measured with the start on finer
-/// grids, the sharp estimator for every history but the striker's; the kinematic law keeps
-/// the conservative bound for the penetration speed, the work and the energy defect.
-#[test]
-fn estimates_bound_the_actual_errors_and_are_sharp() {
-    // the sweep's cases run here, and the ends they take
-    let shorter = [
-        ("reference", 4.0),
-        ("reference kinematic", 4.0),
-        ("light fast nu .3", 3.2),
-        ("circle M 100 V .05", 2.4),
-        ("kinematic power k 3", 4.0),
-        ("wedge 80", 2.0),
-    ];
-    // the medians held, in the order of PICKS
-    let least = [0.067, 0.05, 0.049, 0.044, 0.044, 0.061, 0.097];
+/// exceeds it, and the estimates are no more pessimistic than measured: the medians of
+/// actual/stated over the shorter runs of `shorter` are held at `least` (in the order of
+/// [`PICKS`]). Rigid strikers of curved profiles under Signorini's law take the policies
+/// measured with the start on finer grids, the sharp estimator for every history but the
+/// striker's where the order shows; the kinematic law keeps the conservative bound for the
+/// penetration speed, the work and the energy defect.
+/// The medians held by [`estimates_bound_the_actual_errors_and_are_sharp`].
+const LEAST_SLOW: [f64; PICKS.len()] = [0.067, 0.052, 0.078, 0.032, 0.032, 0.070, 0.074];
+/// The medians held by [`estimates_of_fast_strikers_bound_the_actual_errors`].
+const LEAST_FAST: [f64; PICKS.len()] = [0.168, 0.006, 0.0075, 0.073, 0.073, 0.051, 0.43];
+
+fn check_estimates(shorter: &[(&str, f64)], least: [f64; PICKS.len()], sharp_least: usize) {
     let dx = 0.01;
     let mut ratios = vec![Vec::new(); PICKS.len()];
     let mut run = 0;
@@ -107,7 +98,7 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
     }
     assert_eq!(run, shorter.len(), "every named case is in the sweep");
     assert!(
-        sharp_started >= 6,
+        sharp_started >= sharp_least,
         "{sharp_started} of the started cases' dh/dt, work and defect took the sharp estimator"
     );
     let summary: Vec<(f64, f64)> = ratios
@@ -123,6 +114,44 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
             "{key}: the median of actual/stated is {med:.3}, below {least}: the estimates are not sharp"
         );
     }
+}
+
+/// Four of the sweep's cases on shorter runs (the reference case under both laws, the wedge,
+/// the kinematic power law k = 3) at R/100: the medians of actual/stated are 0.089 (h), 0.070
+/// (b), 0.104 (the force), 0.043 (dh/dt and the kinetic energy), 0.094 (the work) and 0.099
+/// (the energy defect),
+/// held at three quarters of that (over the full sweep at R/100: 0.21 (h), 0.070 (b), 0.11
+/// (the force), 0.16 (dh/dt and the kinetic energy), 0.12 (the work) and 0.14 (the energy
+/// defect); the aim is 0.1; the early part weighs more in short runs).
+#[test]
+fn estimates_bound_the_actual_errors_and_are_sharp() {
+    check_estimates(
+        &[
+            ("reference", 4.0),
+            ("reference kinematic", 4.0),
+            ("kinematic power k 3", 4.0),
+            ("wedge 80", 2.0),
+        ],
+        LEAST_SLOW,
+        4,
+    );
+}
+
+/// The two fast strikers of the sweep on shorter runs (the light parabola at V0/c1 = 0.1 and
+/// the circle at 0.05, whose finer grids' starts march wide contacts at fast edges: about a
+/// minute in release), in the explicit tier: the medians of actual/stated are 0.224 (h), 0.008 (b),
+/// 0.010 (the force: their early rows, where the contact widens fastest, weigh most in these
+/// short runs), 0.098 (dh/dt, the kinetic energy), 0.068 (the work) and 0.575 (the energy
+/// defect),
+/// held at three quarters of that.
+#[test]
+#[ignore = "the explicit tier: about a minute in release"]
+fn estimates_of_fast_strikers_bound_the_actual_errors() {
+    check_estimates(
+        &[("light fast nu .3", 3.2), ("circle M 100 V .05", 2.4)],
+        LEAST_FAST,
+        2,
+    );
 }
 
 /// The kinematic law's force on the reference case at the default grid (R/200, three
