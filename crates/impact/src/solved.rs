@@ -271,8 +271,8 @@ pub struct Orders {
     pub b: Option<f64>,
     /// Order of the force.
     pub force: Option<f64>,
-    /// The error model of h, b and the force, and of the other histories (the penetration
-    /// speed, the energies, the striker's deformation: conservative); `None` with one level.
+    /// The error model of each estimated history ([`Models`]: the sharp estimator or the
+    /// conservative bound, `docs/impact.md`, section 5); `None` with one level.
     pub models: Option<Models>,
 }
 
