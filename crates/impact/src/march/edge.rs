@@ -713,7 +713,7 @@ mod tests {
         let mut grown = tables();
         grown.ensure(320, 0).unwrap();
         let mut worst: f64 = 0.0;
-        for lambda in [0.5, -0.5, 0.3] {
+        for lambda in [0.5, -0.5, 0.3, -0.85] {
             let model = EdgeModel {
                 lambda,
                 gap: 0.0,
