@@ -26,6 +26,8 @@ Phi_W(z - i y)] dy (W vanishes beyond the P-wave front, so no constant is left o
 
 Usage: python3 tests/reference/selfsimilar_wedge.py [nu] [D ...]   (default 0.25 and the
 speeds of the docs' table); prints one JSON record per speed.
+       python3 tests/reference/selfsimilar_wedge.py --write [FILE]   writes the march's reference
+data (nu = 1/4, D = 0.15, 0.3, 0.45; default tests/reference/selfsimilar_wedge_reference.json).
 """
 import json
 import sys
@@ -109,7 +111,19 @@ def case(nu, d):
     return out
 
 
+REFERENCE_SPEEDS = ["0.15", "0.3", "0.45"]
+
+
 if __name__ == "__main__":
+    if sys.argv[1:2] == ["--write"]:
+        # the reference data of the march's test (`crates/impact/tests/suite/selfsimilar.rs`):
+        # nu = 1/4, sub-Rayleigh speeds, where both edge laws have a solution
+        out = sys.argv[2] if len(sys.argv) > 2 else "tests/reference/selfsimilar_wedge_reference.json"
+        cases = [case("0.25", d) for d in REFERENCE_SPEEDS]
+        with open(out, "w") as f:
+            json.dump({"source": "tests/reference/selfsimilar_wedge.py --write", "cases": cases}, f, indent=1)
+            f.write("\n")
+        sys.exit(0)
     nu = sys.argv[1] if len(sys.argv) > 1 else "0.25"
     speeds = sys.argv[2:] or ["0.3", "0.5", "0.555", "0.5558"]
     for d in speeds:

@@ -14,4 +14,5 @@ mod green;
 mod physics;
 mod precision;
 mod rebound;
+mod selfsimilar;
 mod strikers;
