@@ -525,7 +525,8 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
 
     /// The free (Signorini) edge inside a cell: the edge cell c carries the local model's
     /// pressure, and its mean displacement leaves the model's gap over the part beyond the
-    /// edge; the edge is the root of that condition in the cell (regula falsi), the cell
+    /// edge; the edge is the root of that condition in the cell (a secant from the edge the
+    /// previous steps' speed predicts, safeguarded by the bracket and bisection), the cell
     /// moving outwards or inwards when the root lies beyond it. Returns (c, b, pressures,
     /// force), or `None` where the model cannot stand: the edge recedes into the first two
     /// cells, or a cell's pressure would pull (the contact is then found among whole cells,
@@ -591,12 +592,21 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             if r0 >= 0.0 {
                 return Ok(pushes(&p0).then(|| (c, edge(zero), p0, f0)));
             }
-            // regula falsi (Illinois) on theta in (0, 1)
+            // a safeguarded secant on theta in (0, 1), from the edge the previous steps'
+            // speed predicts: secant steps through the last two iterates while they fall
+            // inside the bracket, bisection otherwise
             let (mut a, mut fa, mut b, mut fb) = (zero, r0, one, r1);
             let mut best = (p0, f0, zero);
-            let mut side = 0;
+            let predicted = self.steps.last().map(|s| {
+                let b = s.b + recent_edge_speed(&self.steps, self.dt) * self.dt;
+                b / dx - (c as f64 - 0.5)
+            });
+            let mut x = match predicted {
+                Some(t) if t > 1e-3 && t < 1.0 - 1e-3 => t,
+                _ => (a * fb - b * fa) / (fb - fa),
+            };
+            let mut last: Option<(T, T)> = None;
             for _ in 0..ITERATIONS * T::BITS as usize / 53 + 10 {
-                let x = (a * fb - b * fa) / (fb - fa);
                 let (rx, px, fx) = residual(c, x)?;
                 best = (px, fx, x);
                 if rx.abs() <= (d.h_pred.abs() + dx) * tolerance::<T>(1e-15)
@@ -607,18 +617,20 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 if (rx > 0.0) == (fb > 0.0) {
                     b = x;
                     fb = rx;
-                    if side == -1 {
-                        fa *= 0.5;
-                    }
-                    side = -1;
                 } else {
                     a = x;
                     fa = rx;
-                    if side == 1 {
-                        fb *= 0.5;
-                    }
-                    side = 1;
                 }
+                let next = match last {
+                    Some((xl, rl)) if rl != rx => x - rx * (x - xl) / (rx - rl),
+                    _ => (a * fb - b * fa) / (fb - fa),
+                };
+                last = Some((x, rx));
+                x = if next > a && next < b {
+                    next
+                } else {
+                    (a + b) * 0.5
+                };
             }
             let (p, f, theta) = best;
             return Ok(pushes(&p).then(|| (c, edge(theta), p, f)));
