@@ -20,24 +20,36 @@ CASE = dict(profile="parabola:R=1", mass_ratio=10, v0_over_c1=0.01, end=20, c1=1
 
 
 def test_two_threads_run_two_cases_at_once():
+    # Each thread takes the GIL to start its case: were the GIL held while a case computes,
+    # the other thread could not start before it ended. So the two runs overlap in time
+    # exactly when the GIL is released; no timing threshold (a loaded machine cannot fail
+    # it). The speed-up itself is printed, for the record.
     dyncontact.impact.run(**CASE)  # warm
     t0 = time.perf_counter()
     dyncontact.impact.run(**CASE)
     one = time.perf_counter() - t0
+    barrier = threading.Barrier(2)
+    spans: list[tuple[float, float]] = []
     results = []
-    threads = [threading.Thread(target=lambda: results.append(dyncontact.impact.run(**CASE))) for _ in range(2)]
+
+    def work() -> None:
+        barrier.wait()
+        start = time.perf_counter()
+        results.append(dyncontact.impact.run(**CASE))
+        spans.append((start, time.perf_counter()))
+
+    threads = [threading.Thread(target=work) for _ in range(2)]
     t0 = time.perf_counter()
     for t in threads:
         t.start()
     for t in threads:
         t.join()
     two = time.perf_counter() - t0
-    ratio = two / one
-    print(f"two cases in two threads / one case: {ratio:.2f} (one case {one:.2f} s, {os.cpu_count()} cores)")
+    print(f"two cases in two threads / one case: {two / one:.2f} (one case {one:.2f} s, {os.cpu_count()} cores)")
     assert len(results) == 2
     assert results[0].to_dict() == results[1].to_dict()
-    if (os.cpu_count() or 1) >= 2:
-        assert ratio < 1.6, ratio
+    overlap = min(end for _, end in spans) - max(start for start, _ in spans)
+    assert overlap > 0.5 * one, (spans, one)
 
 
 def test_python_runs_while_a_case_computes():

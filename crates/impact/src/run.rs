@@ -28,6 +28,14 @@ pub const EDGE_CROSSINGS: f64 = 3.0;
 /// The largest window of the reported edge's smoothing, in steps (`Run::edge_at`).
 pub const EDGE_WINDOW_STEPS: usize = 40;
 
+/// The smallest half-window (in steps) whose quadratic is tested against the quartic
+/// (`Run::crossing_fit`).
+const FIT_TEST_HALF: usize = 8;
+
+/// How many standard errors the quartic's value may differ from the quadratic's before the
+/// window is halved (`Run::crossing_fit`).
+const FIT_TEST_SIGMAS: f64 = 3.0;
+
 /// The largest window of the reported force's smoothing, in steps (`Run::force_at`): one
 /// crossing takes 1/(kappa |db/dt|) steps on every grid (37 near the reference case's peak
 /// force), and three of them are needed to average the force's sawtooth out
@@ -58,7 +66,7 @@ impl<T: Scalar> Run<T> {
             return Some(s.b);
         }
         let mid = |x: &StepState<T>| x.edge_time != x.t && x.b > 0.0;
-        self.crossing_fit(n, EDGE_WINDOW_STEPS, mid, |x| (x.edge_time, x.b))
+        self.crossing_fit(n, EDGE_WINDOW_STEPS, false, mid, |x| (x.edge_time, x.b))
             .or_else(|| self.edge_interpolated(n))
     }
 
@@ -72,10 +80,10 @@ impl<T: Scalar> Run<T> {
         &self,
         n: usize,
         cap: usize,
+        test_curvature: bool,
         eligible: impl Fn(&StepState<T>) -> bool,
         value: impl Fn(&StepState<T>) -> (T, T),
     ) -> Option<T> {
-        let s = self.step(n)?;
         let ok = |m: usize| self.step(m).is_some_and(&eligible);
         if !ok(n) {
             return None;
@@ -102,24 +110,71 @@ impl<T: Scalar> Run<T> {
         if half < 2 {
             return None;
         }
-        // normal equations of a + c1 x + c2 x^2, x = (time - t_n)/width
+        // the quadratic's value at t_n, over windows halved while the quartic through the same
+        // steps differs from it at t_n by more than the scatter allows: then the window is
+        // wider than the history is a quadratic (a nearly still edge on a coarse grid: the
+        // cap in steps is a long time), and the crossings' sawtooth no longer dominates what
+        // the fit averages
+        let mut half = half;
+        loop {
+            let (quadratic, _) = self.polynomial_fit(n, half, 2, &value)?;
+            if !test_curvature || half < FIT_TEST_HALF {
+                return Some(quadratic);
+            }
+            let (quartic, scatter) = self.polynomial_fit(n, half, 4, &value)?;
+            // the quartic's value at the centre differs from the quadratic's by its P4 term,
+            // whose standard error over 2 half + 1 evenly spread steps is
+            // scatter (81/(64 (2 half + 1)))^(1/2)
+            let spread = scatter * (81.0 / (64.0 * (2 * half + 1) as f64)).sqrt();
+            if (quadratic - quartic).abs().to_f64() <= FIT_TEST_SIGMAS * spread {
+                return Some(quadratic);
+            }
+            half /= 2;
+        }
+    }
+
+    /// The least-squares polynomial of `degree` through `value` (time, value) of steps
+    /// n - half ..= n + half: its value at t_n and the residuals' scatter (their root mean
+    /// square over the degrees of freedom, in f64).
+    fn polynomial_fit(
+        &self,
+        n: usize,
+        half: usize,
+        degree: usize,
+        value: &impl Fn(&StepState<T>) -> (T, T),
+    ) -> Option<(T, f64)> {
+        let s = self.step(n)?;
+        let k = degree + 1;
+        // normal equations in x = (time - t_n)/width
         let width = self.dt * (half as f64 + 0.5);
         let zero = T::of(0.0);
-        let (mut m, mut r) = (vec![zero; 9], [zero; 3]);
+        let (mut m, mut r) = (vec![zero; k * k], vec![zero; k]);
+        let mut points = Vec::with_capacity(2 * half + 1);
         for j in n - half..=n + half {
             let (time, v) = value(self.step(j)?);
             let x = (time - s.t) / width;
-            let phi = [T::of(1.0), x, x * x];
-            for i in 0..3 {
-                for (mij, &pj) in m[3 * i..3 * i + 3].iter_mut().zip(&phi) {
+            let mut phi = vec![T::of(1.0); k];
+            for i in 1..k {
+                phi[i] = phi[i - 1] * x;
+            }
+            for i in 0..k {
+                for (mij, &pj) in m[k * i..k * i + k].iter_mut().zip(&phi) {
                     *mij += phi[i] * pj;
                 }
                 r[i] += phi[i] * v;
             }
+            points.push((phi, v));
         }
-        complexfn::linalg::Lu::new(m, 3)
-            .and_then(|lu| lu.solve(&r))
-            .map(|c| c[0])
+        let c = complexfn::linalg::Lu::new(m, k).and_then(|lu| lu.solve(&r))?;
+        let dof = points.len().saturating_sub(k).max(1) as f64;
+        let ssr: f64 = points
+            .iter()
+            .map(|(phi, v)| {
+                let fit = phi.iter().zip(&c).fold(zero, |a, (&p, &ci)| a + p * ci);
+                (*v - fit).to_f64().powi(2)
+            })
+            .sum();
+        Some((c[0], (ssr / dof).sqrt()))
     }
 
     /// The edge at t_n interpolated between the edges of the steps around it by the times
@@ -148,16 +203,23 @@ impl<T: Scalar> Run<T> {
     /// t_n of the least-squares quadratic through the steps' forces over a window of
     /// [`EDGE_CROSSINGS`] cell crossings (at most [`FORCE_WINDOW_STEPS`] steps, symmetric
     /// within the steps in contact); where that window holds fewer than five steps,
-    /// [`Run::force_interpolated`]. A step marched on a finer grid reports that grid's
-    /// force ([`StepState::finer`]).
+    /// [`Run::force_interpolated`]. Where the edge is free (placed by the step's pressures,
+    /// its time the step's middle) the window is halved while the history is no quadratic
+    /// over it (`Run::crossing_fit`); a geometric edge's (the kinematic law's, the supersonic
+    /// stage's) keeps its window, as its phase error near a standstill would read as
+    /// curvature. A step marched on a finer grid reports that grid's force
+    /// ([`StepState::finer`]).
     pub fn force_at(&self, n: usize) -> Option<T> {
-        if let Some((_, f)) = self.step(n)?.finer {
+        let s = self.step(n)?;
+        if let Some((_, f)) = s.finer {
             return Some(f);
         }
+        let free_edge = s.edge_time != s.t;
         let dt = self.dt;
         self.crossing_fit(
             n,
             FORCE_WINDOW_STEPS,
+            free_edge,
             |x| !x.pressure.is_empty(),
             |x| (x.t - dt * 0.5, x.force),
         )
@@ -292,6 +354,37 @@ mod tests {
             let e = (run.force_at(n).unwrap() - force(t)).abs();
             assert!(e < 1e-9, "step {n}: {e}");
         }
+    }
+
+    /// Where the edge stands still the window is the cap, 120 steps, which on a coarse grid
+    /// is a long time: a force with a peak narrower than that is not a quadratic over it. The
+    /// quartic through the same steps shows it, and the window is halved until it is.
+    #[test]
+    fn the_force_window_narrows_where_the_history_is_not_a_quadratic() {
+        let (mut run, _) = sawtooth_run(0.0);
+        let dt = run.dt;
+        let force = |t: f64| 1.0 / (1.0 + ((t - 4.0) / 0.5).powi(2));
+        for s in run.steps.iter_mut() {
+            // a still edge, and the force at the middle of the step
+            s.b = 0.3;
+            s.edge_time = s.t - 0.5 * dt;
+            s.force = force(s.t - 0.5 * dt);
+            s.pressure = vec![s.force];
+        }
+        let f = |m: &StepState<f64>| (m.t - 0.5 * dt, m.force);
+        let n = 200;
+        let t = n as f64 * dt;
+        let wide = run
+            .crossing_fit(n, FORCE_WINDOW_STEPS, false, |x| !x.pressure.is_empty(), f)
+            .unwrap();
+        let reported = run.force_at(n).unwrap();
+        // the quadratic over +-60 steps (+-1.2 R/c1) misses the peak by a fifth
+        assert!((wide - force(t)).abs() > 0.1, "wide window {wide}");
+        assert!(
+            (reported - force(t)).abs() < 1e-3,
+            "reported {reported} against {}",
+            force(t)
+        );
     }
 
     #[test]
