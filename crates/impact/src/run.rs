@@ -28,6 +28,24 @@ pub const EDGE_CROSSINGS: f64 = 3.0;
 /// The largest window of the reported edge's smoothing, in steps (`Run::edge_at`).
 pub const EDGE_WINDOW_STEPS: usize = 40;
 
+/// The coefficients of the reports' quadratic and of the quartic it is tested against
+/// (`Run::crossing_fit`).
+const QUADRATIC: usize = 3;
+const QUARTIC: usize = 5;
+
+/// The coefficients of the leading k x k block of the normal equations `m` (row-major,
+/// stride [`QUARTIC`]) and `r`.
+fn solve_leading<T: Scalar>(
+    m: &[T; QUARTIC * QUARTIC],
+    r: &[T; QUARTIC],
+    k: usize,
+) -> Option<Vec<T>> {
+    let block: Vec<T> = (0..k)
+        .flat_map(|i| m[QUARTIC * i..QUARTIC * i + k].iter().copied())
+        .collect();
+    complexfn::linalg::Lu::new(block, k).and_then(|lu| lu.solve(&r[..k]))
+}
+
 /// The smallest half-window (in steps) whose quadratic is tested against the quartic
 /// (`Run::crossing_fit`).
 const FIT_TEST_HALF: usize = 8;
@@ -116,65 +134,87 @@ impl<T: Scalar> Run<T> {
         // cap in steps is a long time), and the crossings' sawtooth no longer dominates what
         // the fit averages
         let mut half = half;
+        let dims = if test_curvature { QUARTIC } else { QUADRATIC };
         loop {
-            let (quadratic, _) = self.polynomial_fit(n, half, 2, &value)?;
+            // one pass: the quartic's normal equations, whose leading block is the quadratic's
+            let (m, r) = self.normal_equations(n, half, dims, &value)?;
+            let quadratic = solve_leading(&m, &r, QUADRATIC)?[0];
             if !test_curvature || half < FIT_TEST_HALF {
                 return Some(quadratic);
             }
-            let (quartic, scatter) = self.polynomial_fit(n, half, 4, &value)?;
+            let c = solve_leading(&m, &r, QUARTIC)?;
+            let scatter = self.scatter(n, half, &c, &value)?;
             // the quartic's value at the centre differs from the quadratic's by its P4 term,
             // whose standard error over 2 half + 1 evenly spread steps is
             // scatter (81/(64 (2 half + 1)))^(1/2)
             let spread = scatter * (81.0 / (64.0 * (2 * half + 1) as f64)).sqrt();
-            if (quadratic - quartic).abs().to_f64() <= FIT_TEST_SIGMAS * spread {
+            if (quadratic - c[0]).abs().to_f64() <= FIT_TEST_SIGMAS * spread {
                 return Some(quadratic);
             }
             half /= 2;
         }
     }
 
-    /// The least-squares polynomial of `degree` through `value` (time, value) of steps
-    /// n - half ..= n + half: its value at t_n and the residuals' scatter (their root mean
-    /// square over the degrees of freedom, in f64).
-    fn polynomial_fit(
+    /// The window's abscissa x = (time - t_n)/width of a step's (time, value), and its powers
+    /// 1, x, ..., x^(QUARTIC - 1).
+    fn powers(&self, n: usize, half: usize, time: T) -> Option<[T; QUARTIC]> {
+        let width = self.dt * (half as f64 + 0.5);
+        let x = (time - self.step(n)?.t) / width;
+        let mut phi = [T::of(1.0); QUARTIC];
+        for i in 1..QUARTIC {
+            phi[i] = phi[i - 1] * x;
+        }
+        Some(phi)
+    }
+
+    /// The normal equations of the least-squares polynomial with `dims` coefficients through
+    /// `value` (time, value) of steps n - half ..= n + half, in x = (time - t_n)/width: the
+    /// leading dims x dims block of the matrix (row-major, stride QUARTIC) and of the right
+    /// side are filled, each entry summed over the steps in order (so the quadratic's block is
+    /// the same whether or not the quartic's is summed with it).
+    fn normal_equations(
         &self,
         n: usize,
         half: usize,
-        degree: usize,
+        dims: usize,
         value: &impl Fn(&StepState<T>) -> (T, T),
-    ) -> Option<(T, f64)> {
-        let s = self.step(n)?;
-        let k = degree + 1;
-        // normal equations in x = (time - t_n)/width
-        let width = self.dt * (half as f64 + 0.5);
+    ) -> Option<([T; QUARTIC * QUARTIC], [T; QUARTIC])> {
         let zero = T::of(0.0);
-        let (mut m, mut r) = (vec![zero; k * k], vec![zero; k]);
-        let mut points = Vec::with_capacity(2 * half + 1);
+        let (mut m, mut r) = ([zero; QUARTIC * QUARTIC], [zero; QUARTIC]);
         for j in n - half..=n + half {
             let (time, v) = value(self.step(j)?);
-            let x = (time - s.t) / width;
-            let mut phi = vec![T::of(1.0); k];
-            for i in 1..k {
-                phi[i] = phi[i - 1] * x;
-            }
-            for i in 0..k {
-                for (mij, &pj) in m[k * i..k * i + k].iter_mut().zip(&phi) {
+            let phi = self.powers(n, half, time)?;
+            for i in 0..dims {
+                for (mij, &pj) in m[QUARTIC * i..QUARTIC * i + dims].iter_mut().zip(&phi) {
                     *mij += phi[i] * pj;
                 }
                 r[i] += phi[i] * v;
             }
-            points.push((phi, v));
         }
-        let c = complexfn::linalg::Lu::new(m, k).and_then(|lu| lu.solve(&r))?;
-        let dof = points.len().saturating_sub(k).max(1) as f64;
-        let ssr: f64 = points
-            .iter()
-            .map(|(phi, v)| {
-                let fit = phi.iter().zip(&c).fold(zero, |a, (&p, &ci)| a + p * ci);
-                (*v - fit).to_f64().powi(2)
-            })
-            .sum();
-        Some((c[0], (ssr / dof).sqrt()))
+        Some((m, r))
+    }
+
+    /// The root mean square, over the degrees of freedom, of the residuals of the polynomial
+    /// `c` (in x = (time - t_n)/width) through the steps n - half ..= n + half, in f64.
+    fn scatter(
+        &self,
+        n: usize,
+        half: usize,
+        c: &[T],
+        value: &impl Fn(&StepState<T>) -> (T, T),
+    ) -> Option<f64> {
+        let mut ssr = 0.0;
+        for j in n - half..=n + half {
+            let (time, v) = value(self.step(j)?);
+            let phi = self.powers(n, half, time)?;
+            let fit = phi
+                .iter()
+                .zip(c)
+                .fold(T::of(0.0), |a, (&p, &ci)| a + p * ci);
+            ssr += (v - fit).to_f64().powi(2);
+        }
+        let dof = (2 * half + 1).saturating_sub(c.len()).max(1) as f64;
+        Some((ssr / dof).sqrt())
     }
 
     /// The edge at t_n interpolated between the edges of the steps around it by the times
