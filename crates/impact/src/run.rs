@@ -13,6 +13,10 @@ pub struct Run<T = f64> {
     pub dt: T,
     /// The steps.
     pub steps: Vec<StepState<T>>,
+    /// Steps marched past the run's end, only so that the smoothed reports of its last
+    /// steps ([`Run::edge_at`], [`Run::force_at`]) take whole windows centred on them, not
+    /// one-sided fits (`docs/impact.md`, section 4; empty where the run could not go on).
+    pub beyond: Vec<StepState<T>>,
     /// The times the contact ended, in order (the end of the last step in contact).
     pub separations: Vec<T>,
     /// The times contact began again after a separation.
@@ -60,10 +64,37 @@ const FIT_TEST_SIGMAS: f64 = 3.0;
 /// (`docs/impact.md`, section 4).
 pub const FORCE_WINDOW_STEPS: usize = 120;
 
+/// The steps a march goes on past a step so that the smoothed reports of that step take
+/// whole windows centred on it ([`Run::edge_at`], [`Run::force_at`]): half of
+/// [`EDGE_CROSSINGS`] cell crossings at the edge's speed `speed` (units c1; at most half of
+/// [`FORCE_WINDOW_STEPS`]), and two more. At most [`WINDOW_MARGIN_MAX`].
+pub(crate) fn window_margin(speed: f64, dx: f64, dt: f64) -> usize {
+    let crossings = EDGE_CROSSINGS * dx / (dt * speed.abs().max(1e-300));
+    (0.5 * crossings.min(FORCE_WINDOW_STEPS as f64)).ceil() as usize + 2
+}
+
+/// The largest [`window_margin`].
+pub(crate) const WINDOW_MARGIN_MAX: usize = FORCE_WINDOW_STEPS / 2 + 2;
+
+/// The most steps a run of `steps` steps marches past its end ([`Run::beyond`]): up to the
+/// next power of two, where the fast history sum's next square, as long as the run so far,
+/// would be summed for them alone (`crate::history`), and at most [`WINDOW_MARGIN_MAX`].
+pub(crate) fn end_margin(steps: usize) -> usize {
+    (steps.next_power_of_two() - steps).min(WINDOW_MARGIN_MAX)
+}
+
 impl<T: Scalar> Run<T> {
     /// Step n (time t_n = n dt, n >= 1), if the march reached it.
     pub fn step(&self, n: usize) -> Option<&StepState<T>> {
         n.checked_sub(1).and_then(|i| self.steps.get(i))
+    }
+
+    /// Step n for the smoothing windows: the steps, then those marched past the end.
+    fn window_step(&self, n: usize) -> Option<&StepState<T>> {
+        let i = n.checked_sub(1)?;
+        self.steps
+            .get(i)
+            .or_else(|| self.beyond.get(i - self.steps.len()))
     }
 
     /// The contact half-width at t_n (`docs/impact.md`, section 4, the edge's report): the
@@ -102,7 +133,7 @@ impl<T: Scalar> Run<T> {
         eligible: impl Fn(&StepState<T>) -> bool,
         value: impl Fn(&StepState<T>) -> (T, T),
     ) -> Option<T> {
-        let ok = |m: usize| self.step(m).is_some_and(&eligible);
+        let ok = |m: usize| self.window_step(m).is_some_and(&eligible);
         if !ok(n) {
             return None;
         }
@@ -116,7 +147,7 @@ impl<T: Scalar> Run<T> {
         }
         // the window (a choice of steps, taken in f64)
         let (dx, dt) = (self.dx.to_f64(), self.dt.to_f64());
-        let b = |m: usize| self.step(m).map_or(0.0, |x| x.b.to_f64());
+        let b = |m: usize| self.window_step(m).map_or(0.0, |x| x.b.to_f64());
         let k = (n - first).min(last - n).min(5);
         let speed = if k > 0 {
             ((b(n + k) - b(n - k)) / (2.0 * k as f64 * dt)).abs()
@@ -182,7 +213,7 @@ impl<T: Scalar> Run<T> {
         let zero = T::of(0.0);
         let (mut m, mut r) = ([zero; QUARTIC * QUARTIC], [zero; QUARTIC]);
         for j in n - half..=n + half {
-            let (time, v) = value(self.step(j)?);
+            let (time, v) = value(self.window_step(j)?);
             let phi = self.powers(n, half, time)?;
             for i in 0..dims {
                 for (mij, &pj) in m[QUARTIC * i..QUARTIC * i + dims].iter_mut().zip(&phi) {
@@ -205,7 +236,7 @@ impl<T: Scalar> Run<T> {
     ) -> Option<f64> {
         let mut ssr = 0.0;
         for j in n - half..=n + half {
-            let (time, v) = value(self.step(j)?);
+            let (time, v) = value(self.window_step(j)?);
             let phi = self.powers(n, half, time)?;
             let fit = phi
                 .iter()
@@ -223,7 +254,7 @@ impl<T: Scalar> Run<T> {
     pub fn edge_interpolated(&self, n: usize) -> Option<T> {
         let s = self.step(n)?;
         let (a, b) = match (
-            self.step(n + 1),
+            self.window_step(n + 1),
             n.checked_sub(1).and_then(|m| self.step(m)),
         ) {
             (Some(next), _) => (s, next),
@@ -269,7 +300,7 @@ impl<T: Scalar> Run<T> {
     /// The force at t_n from the two steps around it (their forces stand for the middles of
     /// the steps): their mean, the last step's extrapolated from the two before it.
     pub fn force_interpolated(&self, n: usize) -> Option<T> {
-        let f = |n: usize| self.step(n).map(|s| s.force);
+        let f = |n: usize| self.window_step(n).map(|s| s.force);
         match (f(n), f(n + 1)) {
             (Some(a), Some(b)) => Some((a + b) * 0.5),
             (Some(a), None) if n >= 2 => f(n - 1).map(|z| a * 1.5 - z * 0.5),
@@ -313,6 +344,7 @@ mod tests {
             dx,
             dt,
             steps,
+            beyond: Vec::new(),
             separations: Vec::new(),
             reimpacts: Vec::new(),
             coefficient_error: 0.0,
@@ -425,6 +457,48 @@ mod tests {
             "reported {reported} against {}",
             force(t)
         );
+    }
+
+    /// Steps marched past the end (`Run::beyond`) give the last steps' smoothed edge and
+    /// force the whole run's values there: the windows centred on them, not the one-sided
+    /// ends (whose raw values carry the sawtooth).
+    #[test]
+    fn steps_past_the_end_give_the_last_reports_whole_windows() {
+        let (mut whole, truth) = sawtooth_run(0.02);
+        let dt = whole.dt;
+        for s in whole.steps.iter_mut() {
+            // a step's force stands for the middle of the step
+            let phase = (s.b / whole.dx).fract();
+            s.force = 1.0 + 0.3 * (s.t - 0.5 * dt) + 0.03 * (phase - 0.5);
+            s.pressure = vec![s.force];
+        }
+        let end = 300;
+        let mut cut = whole.clone();
+        cut.beyond = cut.steps.split_off(end);
+        let mut bare = cut.clone();
+        bare.beyond.clear();
+        for n in end - 3..=end {
+            assert_eq!(cut.edge_at(n), whole.edge_at(n), "edge at step {n}");
+            assert_eq!(cut.force_at(n), whole.force_at(n), "force at step {n}");
+        }
+        // without them the last step's edge and force are the raw, one-sided values
+        let t = end as f64 * whole.dt;
+        let (with, without) = (
+            (cut.edge_at(end).unwrap() - truth(t)).abs(),
+            (bare.edge_at(end).unwrap() - truth(t)).abs(),
+        );
+        assert!(with < 0.25 * without, "edge error {with} against {without}");
+        let force = 1.0 + 0.3 * t;
+        let (with, without) = (
+            (cut.force_at(end).unwrap() - force).abs(),
+            (bare.force_at(end).unwrap() - force).abs(),
+        );
+        assert!(
+            with < 0.25 * without,
+            "force error {with} against {without}"
+        );
+        // past the end nothing is reported
+        assert!(cut.step(end + 1).is_none());
     }
 
     #[test]

@@ -9,9 +9,9 @@ use lamb::HalfPlane;
 
 use crate::case::{Drive, ImpactCase, Stop};
 use crate::error::{invalid, ImpactError, Result};
-use crate::march::{merge_onto_coarser, EdgeLaw, March, StepState};
+use crate::march::{merge_onto_coarser, recent_edge_speed, EdgeLaw, March, StepState};
 use crate::profile::Profile;
-use crate::run::Run;
+use crate::run::{end_margin, window_margin, Run};
 use crate::scalar::Scalar;
 use crate::solved::SolvedImpact;
 use crate::solved::CYLINDER_MODES_BELOW;
@@ -105,7 +105,10 @@ impl ImpactCase {
     /// the finest level's grid of stage j before the level's end (it then goes on to the
     /// end). The hand-over times are the same for every level, so that at every time the
     /// levels' grids stand in the ratio of their dx (the levels' differences keep measuring
-    /// the error).
+    /// the error). A stage marches half a report window past its hand-over, and past the
+    /// level's end where it goes on to the end and `past_end` allows it (the drive and the
+    /// striker's model go on there), so that its reports of the steps it hands over take
+    /// whole windows.
     #[allow(clippy::too_many_arguments)]
     fn fine_start<T: Scalar + CachedRules>(
         &self,
@@ -116,6 +119,7 @@ impl ImpactCase {
         depth: usize,
         most: usize,
         gap_scale: Option<T>,
+        past_end: bool,
     ) -> Result<Vec<StepState<T>>> {
         if stage > depth || most == 0 {
             return Ok(Vec::new());
@@ -129,6 +133,7 @@ impl ImpactCase {
             depth,
             2 * most,
             gap_scale,
+            past_end,
         )?;
         let slow_below = *tables.half_plane().s_r() * START_EDGE_SPEED;
         let scale = 0.5f64.powi(stage as i32);
@@ -173,21 +178,30 @@ impl ImpactCase {
         // over take their whole windows (`Run::force_at`: half of EDGE_CROSSINGS cell
         // crossings of the edge, at most half of FORCE_WINDOW_STEPS, after the step), not the
         // one-sided fits of a run's end
+        // (at the level's end too, where the run goes on past it: `Run::beyond`)
         let handed = march.steps.len();
-        if handed < 2 * most && !march.separated() {
-            let speed = crate::march::recent_edge_speed(&march.steps, fdt)
-                .abs()
-                .to_f64();
-            let crossings = crate::run::EDGE_CROSSINGS * (fdx / fdt).to_f64() / speed.max(1e-300);
-            let window = crossings.min(crate::run::FORCE_WINDOW_STEPS as f64);
-            for _ in 0..(0.5 * window).ceil() as usize + 2 {
-                march.step()?;
+        let at_end = handed >= 2 * most;
+        if (!at_end || past_end) && !march.separated() {
+            let speed = recent_edge_speed(&march.steps, fdt).to_f64();
+            let most_past = if at_end {
+                end_margin(handed)
+            } else {
+                usize::MAX
+            };
+            for _ in 0..window_margin(speed, fdx.to_f64(), fdt.to_f64()).min(most_past) {
+                match march.step() {
+                    Ok(_) => {}
+                    Err(e) if !at_end => return Err(e),
+                    // past the end the margin only smooths the last reports
+                    Err(_) => break,
+                }
             }
         }
         let run = Run {
             dx: fdx,
             dt: fdt,
             steps: std::mem::take(&mut march.steps),
+            beyond: Vec::new(),
             separations: Vec::new(),
             reimpacts: Vec::new(),
             coefficient_error: 0.0,
@@ -355,6 +369,27 @@ impl ImpactCase {
                 Stop::AtEnd => target.map_or(cap_steps, |(n, _)| n),
                 Stop::AtSeparation => cap_steps,
             };
+            // to an end time, the march goes on past it for the smoothing windows of the last
+            // reports (`Run::beyond`), where the drive and the striker's model go on too, and
+            // no further than the history's squares reach (`run::end_margin`)
+            let margin = match (self.stop, target) {
+                (Stop::AtEnd, Some((n, _))) => {
+                    let room = end_margin(n);
+                    let t_more = dt.to_f64() * (n + room) as f64;
+                    let drive_on = match &self.drive {
+                        Drive::Table(tab) => tab.last().is_some_and(|p| p.0 >= t_more),
+                        _ => true,
+                    };
+                    if drive_on && t_more <= valid_end {
+                        room
+                    } else {
+                        0
+                    }
+                }
+                _ => 0,
+            };
+            let margin_room = margin > 0;
+            let horizon = horizon + margin;
             let mut own = match (&self.striker, shared_kappa) {
                 (Striker::Shell(_) | Striker::Cylinder(_), _) | (Striker::Elastic(_), false) => {
                     self.striker
@@ -376,6 +411,7 @@ impl ImpactCase {
                     self.start_halvings,
                     most,
                     self.edge_gap_scale(m64).map(T::of),
+                    margin_room,
                 )?
             } else {
                 Vec::new()
@@ -455,6 +491,25 @@ impl ImpactCase {
                 }
             }
             done += weight;
+            // past the end, while in contact there (`Run::beyond`)
+            let beyond = match (margin_room, target) {
+                (true, Some((g, end)))
+                    if n == g && march.steps.last().is_some_and(|s| !s.pressure.is_empty()) =>
+                {
+                    let speed = recent_edge_speed(&march.steps, dt).to_f64();
+                    for _ in 0..window_margin(speed, dx, dt.to_f64()).min(margin) {
+                        // the margin only smooths the last reports: a step that cannot be
+                        // marched ends it
+                        if march.step().is_err() {
+                            break;
+                        }
+                    }
+                    march.separations.retain(|&t| t <= end);
+                    march.reimpacts.retain(|&t| t <= end);
+                    march.steps.split_off(g.min(march.steps.len()))
+                }
+                _ => Vec::new(),
+            };
             let (steps, separations, reimpacts) = (
                 std::mem::take(&mut march.steps),
                 std::mem::take(&mut march.separations),
@@ -471,6 +526,7 @@ impl ImpactCase {
                 dx: grid_dx,
                 dt,
                 steps,
+                beyond,
                 separations,
                 reimpacts,
                 coefficient_error,

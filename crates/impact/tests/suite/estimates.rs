@@ -41,12 +41,17 @@ fn check_estimates(shorter: &[(&str, f64)], least: [f64; PICKS.len()], sharp_lea
             .1
             .models
             .expect("three levels have error models");
-        // b's and the force's last rows are conservative (one-sided crossing fits)
         for m in [models.h, models.b, models.force] {
             assert!(m.safety > 0.0, "{name}: {m:?}");
         }
+        // b's and the force's last rows are conservative where their crossing fits are
+        // one-sided there: a level that neither marched past the end nor left the contact
+        let whole_windows = sol
+            .runs
+            .iter()
+            .all(|r| !r.beyond.is_empty() || r.steps.last().is_none_or(|s| s.pressure.is_empty()));
         for m in [models.b, models.force] {
-            assert!(m.conservative_rows >= 1, "{name}: {m:?}");
+            assert!(whole_windows || m.conservative_rows >= 1, "{name}: {m:?}");
         }
         assert_eq!(models.others.estimator, Estimator::Conservative);
         // the start's policies: every history but the striker's sharp where the order shows;

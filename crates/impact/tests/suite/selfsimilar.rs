@@ -81,7 +81,7 @@ fn run(law: EdgeLaw, d: f64, v_over_sd: f64, c0_plus_c1: f64, nu: f64) -> Errors
 }
 
 /// Signorini's law: the free edge runs at D, b and the force within their stated errors at
-/// every report time; the force within 1e-4 of its peak (measured 5.2e-5, 1.3e-5 and 5.5e-6
+/// every report time; the force within 1e-4 of its peak (measured 1.6e-5, 4.5e-6 and 5.5e-6
 /// at D = 0.15, 0.3, 0.45 c1), b within 4e-4 (2.8e-4, 2.7e-4, 3.3e-4: first order in the
 /// start's hand-over width, `docs/impact.md` section 11).
 #[test]
@@ -118,8 +118,9 @@ fn driven_wedge_free_edge_is_the_self_similar_solution_from_the_start() {
 }
 
 /// The kinematic law below c_R: b is the profile's (exact), the force within its stated error
-/// at every report time. Its actual error is far from 1e-4 (measured 2.3e-2, 6.2e-3 and
-/// 1.1e-3 of the peak at D = 0.15, 0.3, 0.45 c1): the edge cell's pressure is tied to its
+/// at every report time. Its actual error is far from 1e-4 (measured 1.0e-2, 6.2e-3 and
+/// 1.0e-3 of the peak at D = 0.15, 0.3, 0.45 c1; the last row's, 2.3e-2 at D = 0.15, before
+/// the runs marched past their end): the edge cell's pressure is tied to its
 /// neighbour's by the singular law, and the tensile square-root edge term is large where D is
 /// small (`docs/impact.md`, section 4, behind the prescribed edge).
 #[test]
@@ -148,7 +149,7 @@ fn driven_wedge_kinematic_force_is_within_its_stated_error() {
             e.force_ratio
         );
         assert!(
-            e.force < 3e-2,
+            e.force < 1.5e-2,
             "D = {d}: force off by {:e} of its peak",
             e.force
         );
