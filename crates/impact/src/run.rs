@@ -17,6 +17,9 @@ pub struct Run<T = f64> {
     /// steps ([`Run::edge_at`], [`Run::force_at`]) take whole windows centred on them, not
     /// one-sided fits (`docs/impact.md`, section 4; empty where the run could not go on).
     pub beyond: Vec<StepState<T>>,
+    /// The defect the start's last hand-over left on this grid, which its steps after it take
+    /// off their history sums ([`HandoverDefect`]; `None` without one).
+    pub handover: Option<HandoverDefect<T>>,
     /// The times the contact ended, in order (the end of the last step in contact).
     pub separations: Vec<T>,
     /// The times contact began again after a separation.
@@ -81,6 +84,43 @@ pub(crate) const WINDOW_MARGIN_MAX: usize = FORCE_WINDOW_STEPS / 2 + 2;
 /// would be summed for them alone (`crate::history`), and at most [`WINDOW_MARGIN_MAX`].
 pub(crate) fn end_margin(steps: usize) -> usize {
     (steps.next_power_of_two() - steps).min(WINDOW_MARGIN_MAX)
+}
+
+/// The defect of a grid's displacements at the step a finer grid handed over
+/// (`docs/impact.md`, section 11, the last hand-over's defect): this grid's displacements of
+/// that step's merged pressures less the merged displacements, on the cells inside its
+/// contact. The m-th step after it takes `weight` times the defect off its history sums, so
+/// its contact conditions read w_i - weight d_i = h - mean f_i.
+#[derive(Clone, Debug)]
+pub struct HandoverDefect<T = f64> {
+    /// The step handed over (the steps after it carry the defect).
+    pub step: usize,
+    /// The defect of the cells inside the contact; beyond them, the last one's.
+    pub defect: Vec<T>,
+    /// K: the steps over which it is let go.
+    pub decay_steps: f64,
+}
+
+impl<T: Scalar> HandoverDefect<T> {
+    /// The defect's weight at step n: (1 - m/K)^2 at the m-th step after the hand-over, 0
+    /// from K on.
+    pub fn weight(&self, n: usize) -> f64 {
+        let m = n.saturating_sub(self.step) as f64;
+        if n > self.step && m < self.decay_steps {
+            (1.0 - m / self.decay_steps).powi(2)
+        } else {
+            0.0
+        }
+    }
+
+    /// The defect of cell i (beyond the cells inside the contact, the last one's).
+    pub fn at(&self, i: usize) -> T {
+        self.defect
+            .get(i)
+            .or(self.defect.last())
+            .copied()
+            .unwrap_or(T::of(0.0))
+    }
 }
 
 impl<T: Scalar> Run<T> {
@@ -345,6 +385,7 @@ mod tests {
             dt,
             steps,
             beyond: Vec::new(),
+            handover: None,
             separations: Vec::new(),
             reimpacts: Vec::new(),
             coefficient_error: 0.0,

@@ -32,6 +32,12 @@ pub const START_CELLS: usize = 24;
 /// times finer (`docs/impact.md`, section 11).
 pub const START_HALVINGS: usize = 6;
 
+/// The steps of the finest level's grid over which a level lets go of the defect its start's
+/// last hand-over leaves ([`crate::run::HandoverDefect`], `docs/impact.md`, section
+/// 11). 16 to 128 and no decay at all were compared on the reference case and the parabola
+/// driven at V/c1 = 0.05.
+pub const HANDOVER_DEFECT_STEPS: usize = 128;
+
 /// The most steps of one finer grid of the start ([`ImpactCase::start_halvings`]): it hands
 /// over after as many steps at the latest (a fast edge that does not slow down, a contact
 /// that stays narrow), which bounds the start's cost.
@@ -202,6 +208,7 @@ impl ImpactCase {
             dt: fdt,
             steps: std::mem::take(&mut march.steps),
             beyond: Vec::new(),
+            handover: march.handover.take(),
             separations: Vec::new(),
             reimpacts: Vec::new(),
             coefficient_error: 0.0,
@@ -436,8 +443,17 @@ impl ImpactCase {
             let weight = 0.25f64.powi(level as i32) / total;
             let mut goal = target.map(|(n, _)| n);
             let mut n = seeds.len();
-            for s in seeds {
-                march.seed(s)?;
+            // the defect of the last hand-over, onto this level's own grid, let go over
+            // HANDOVER_DEFECT_STEPS steps of the finest level's grid (the same time on every
+            // level)
+            let decay = HANDOVER_DEFECT_STEPS as f64 * (level_dt(0) / dt).to_f64();
+            let last = seeds.len();
+            for (i, s) in seeds.into_iter().enumerate() {
+                if i + 1 == last {
+                    march.seed_handover(s, decay)?;
+                } else {
+                    march.seed(s)?;
+                }
             }
             loop {
                 match goal {
@@ -510,10 +526,11 @@ impl ImpactCase {
                 }
                 _ => Vec::new(),
             };
-            let (steps, separations, reimpacts) = (
+            let (steps, separations, reimpacts, handover) = (
                 std::mem::take(&mut march.steps),
                 std::mem::take(&mut march.separations),
                 std::mem::take(&mut march.reimpacts),
+                march.handover.take(),
             );
             drop(march);
             let striker_err = own
@@ -527,6 +544,7 @@ impl ImpactCase {
                 dt,
                 steps,
                 beyond,
+                handover,
                 separations,
                 reimpacts,
                 coefficient_error,

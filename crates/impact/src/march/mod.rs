@@ -13,7 +13,7 @@ use crate::error::{ImpactError, Result};
 use crate::history::{HistorySum, KernelRows};
 use crate::linalg::{least_index_pivoting, Factor};
 use crate::profile::Profile;
-use crate::run::Run;
+use crate::run::{HandoverDefect, Run};
 use crate::scalar::Scalar;
 use crate::tables::{ShapeRules, Tables};
 
@@ -97,6 +97,8 @@ pub struct March<'a, T: Scalar + CachedRules = f64> {
     /// rigid striker); `None` when the local model does not apply (a striker of other wave
     /// speeds or a shell): the edge is then captured cell by cell.
     edge_gap_scale: Option<T>,
+    /// The defect the last hand-over left (`March::seed_handover`, [`HandoverDefect`]).
+    pub handover: Option<HandoverDefect<T>>,
     /// The history sums of the half-plane's and the striker's displacements.
     history: HistorySum<T>,
     striker_history: Option<HistorySum<T>>,
@@ -218,6 +220,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             end: None,
             memory: None,
             checked_width: 0,
+            handover: None,
         }
     }
 
@@ -423,8 +426,17 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 });
             }
         }
+        let mut hist = self.history(n, imax)?;
+        if let Some(handover) = &self.handover {
+            let weight = handover.weight(n);
+            if weight > 0.0 {
+                for (i, h) in hist.0.iter_mut().enumerate() {
+                    *h -= handover.at(i) * weight;
+                }
+            }
+        }
         let data = StepData {
-            hist: self.history(n, imax)?,
+            hist,
             fbar: (0..=imax).map(|i| self.profile_mean(i)).collect(),
             h_pred,
             coupling,
@@ -574,6 +586,39 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             finer: None,
         });
         Ok(in_contact)
+    }
+
+    /// Takes the last step a finer grid hands over ([`March::seed`]) with the defect of this
+    /// grid's displacements there (`docs/impact.md`, section 11): this grid's kernels applied
+    /// to the merged pressures miss the merged displacements, which meet the contact
+    /// conditions, by its own discretisation error, which its next steps would otherwise
+    /// take up at once, a jump of the pressures. The defect of each cell inside the step's
+    /// contact (behind its last contact cell's neighbour), and beyond them the last one's, is
+    /// taken off this grid's history sums at the next steps with the weight (1 - m/K)^2 at
+    /// the m-th, K = `decay_steps`.
+    pub(crate) fn seed_handover(&mut self, s: StepState<T>, decay_steps: f64) -> Result<()> {
+        let inside = s.k.saturating_sub(1).min(s.w.len());
+        if inside > 0 && decay_steps >= 1.0 {
+            let n = self.steps.len() + 1;
+            let imax = s.w.len().max(s.pressure.len()) - 1;
+            let hist = self.history(n, imax)?;
+            let defect = (0..inside)
+                .map(|i| self.displacements(i, &hist, &s.pressure).0 - s.w[i])
+                .collect();
+            self.handover = Some(HandoverDefect {
+                step: n,
+                defect,
+                decay_steps,
+            });
+        }
+        self.seed(s)?;
+        // only behind an edge slower than START_EDGE_SPEED c_R (a fast edge's cells near it
+        // carry the singular law's shape, which the defect would move)
+        let slow = *self.tables.half_plane().s_r() * crate::solve::START_EDGE_SPEED;
+        if recent_edge_speed(&self.steps, self.dt).abs() >= slow {
+            self.handover = None;
+        }
+        Ok(())
     }
 
     /// Takes step n + 1 as solved on a finer grid and merged onto this one

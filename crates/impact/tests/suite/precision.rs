@@ -163,6 +163,11 @@ fn double_double_march_agrees_with_f64_and_satisfies_its_equations_on_mpfr() {
                     (dx.clone() * (i as f64 - 0.5), dx.clone() * (i as f64 + 0.5))
                 };
                 let mean = (hi.clone() * &hi * &hi - lo.clone() * &lo * &lo) / ((hi - lo) * 6u32);
+                // the defect the start's last hand-over left, which the steps after it take
+                // off their history sums (`Run::handover`)
+                if let Some(d) = &run.handover {
+                    w -= d.at(i).to_mpfr(BITS) * d.weight(n);
+                }
                 let residual = (w - (h.clone() - mean)).abs().to_f64() / hmax;
                 worst_row = worst_row.max(residual);
                 rows += 1;
@@ -173,6 +178,13 @@ fn double_double_march_agrees_with_f64_and_satisfies_its_equations_on_mpfr() {
             law.name()
         );
         assert!(rows > 100, "{}: {rows} conditions checked", law.name());
+        // the start's last hand-over left its defect, which the conditions above include
+        assert_eq!(
+            run.handover.is_some(),
+            law == EdgeLaw::Signorini,
+            "{}: the hand-over's defect",
+            law.name()
+        );
         // the start on finer grids is Signorini's alone
         assert_eq!(
             seeded > 0,
