@@ -129,6 +129,13 @@ impl<T: Scalar> Run<T> {
         n.checked_sub(1).and_then(|i| self.steps.get(i))
     }
 
+    /// Whether the last step's smoothed reports ([`Run::edge_at`], [`Run::force_at`]) take
+    /// whole windows: the run marched past its end ([`Run::beyond`]), or it is out of
+    /// contact at its end (its windows closed with the contact).
+    pub fn last_reports_centred(&self) -> bool {
+        !self.beyond.is_empty() || self.steps.last().is_none_or(|s| s.pressure.is_empty())
+    }
+
     /// Step n for the smoothing windows: the steps, then those marched past the end.
     fn window_step(&self, n: usize) -> Option<&StepState<T>> {
         let i = n.checked_sub(1)?;

@@ -208,7 +208,7 @@ impl ImpactCase {
             dt: fdt,
             steps: std::mem::take(&mut march.steps),
             beyond: Vec::new(),
-            handover: march.handover.take(),
+            handover: None,
             separations: Vec::new(),
             reimpacts: Vec::new(),
             coefficient_error: 0.0,
@@ -423,6 +423,9 @@ impl ImpactCase {
             } else {
                 Vec::new()
             };
+            let slow_edge = !seeds.is_empty()
+                && recent_edge_speed(&seeds, dt).abs()
+                    < *tables.half_plane().s_r() * START_EDGE_SPEED;
             let mut march = March::new(
                 &mut *tables,
                 own.as_mut()
@@ -445,8 +448,13 @@ impl ImpactCase {
             let mut n = seeds.len();
             // the defect of the last hand-over, onto this level's own grid, let go over
             // HANDOVER_DEFECT_STEPS steps of the finest level's grid (the same time on every
-            // level)
-            let decay = HANDOVER_DEFECT_STEPS as f64 * (level_dt(0) / dt).to_f64();
+            // level), only behind an edge slower than START_EDGE_SPEED c_R (a fast edge's
+            // cells near it carry the singular law's shape, which the defect would move)
+            let decay = if slow_edge {
+                HANDOVER_DEFECT_STEPS as f64 * (level_dt(0) / dt).to_f64()
+            } else {
+                0.0
+            };
             let last = seeds.len();
             for (i, s) in seeds.into_iter().enumerate() {
                 if i + 1 == last {

@@ -562,10 +562,7 @@ impl<T: Scalar> SolvedImpact<T> {
             self.case.starts_finer() && self.case.start_halvings >= crate::solve::START_HALVINGS;
         // b's and the force's last rows are one-sided crossing fits unless every level
         // marched past the end (`Run::beyond`) or left the contact before it
-        let whole_windows_at_end = self
-            .runs
-            .iter()
-            .all(|r| !r.beyond.is_empty() || r.steps.last().is_none_or(|s| s.pressure.is_empty()));
+        let whole_windows_at_end = self.runs.iter().all(Run::last_reports_centred);
         let last_conservative = |q: usize, i: usize| {
             i + 1 == times.len()
                 && q != Q_H

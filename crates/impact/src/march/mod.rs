@@ -595,7 +595,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
     /// take up at once, a jump of the pressures. The defect of each cell inside the step's
     /// contact (behind its last contact cell's neighbour), and beyond them the last one's, is
     /// taken off this grid's history sums at the next steps with the weight (1 - m/K)^2 at
-    /// the m-th, K = `decay_steps`.
+    /// the m-th, K = `decay_steps` (none below one step).
     pub(crate) fn seed_handover(&mut self, s: StepState<T>, decay_steps: f64) -> Result<()> {
         let inside = s.k.saturating_sub(1).min(s.w.len());
         if inside > 0 && decay_steps >= 1.0 {
@@ -611,14 +611,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 decay_steps,
             });
         }
-        self.seed(s)?;
-        // only behind an edge slower than START_EDGE_SPEED c_R (a fast edge's cells near it
-        // carry the singular law's shape, which the defect would move)
-        let slow = *self.tables.half_plane().s_r() * crate::solve::START_EDGE_SPEED;
-        if recent_edge_speed(&self.steps, self.dt).abs() >= slow {
-            self.handover = None;
-        }
-        Ok(())
+        self.seed(s)
     }
 
     /// Takes step n + 1 as solved on a finer grid and merged onto this one

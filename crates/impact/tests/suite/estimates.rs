@@ -46,10 +46,7 @@ fn check_estimates(shorter: &[(&str, f64)], least: [f64; PICKS.len()], sharp_lea
         }
         // b's and the force's last rows are conservative where their crossing fits are
         // one-sided there: a level that neither marched past the end nor left the contact
-        let whole_windows = sol
-            .runs
-            .iter()
-            .all(|r| !r.beyond.is_empty() || r.steps.last().is_none_or(|s| s.pressure.is_empty()));
+        let whole_windows = sol.runs.iter().all(|r| r.last_reports_centred());
         for m in [models.b, models.force] {
             assert!(whole_windows || m.conservative_rows >= 1, "{name}: {m:?}");
         }
