@@ -146,8 +146,8 @@ pub struct ImpactCase {
 }
 
 impl ImpactCase {
-    /// The case with the defaults dx = 0.01, kappa = 2, three levels, the start on cells 64
-    /// times finer ([`crate::solve::START_HALVINGS`]).
+    /// The case with the defaults of `impact run`: dx = 0.005 (R/200), kappa = 2, three
+    /// levels, the start on cells 64 times finer ([`crate::solve::START_HALVINGS`]).
     pub fn new(poisson: f64, profile: Profile, drive: Drive, law: EdgeLaw, end: f64) -> Self {
         ImpactCase {
             poisson,
@@ -158,7 +158,7 @@ impl ImpactCase {
             end,
             stop: Stop::AtEnd,
             memory_limit: None,
-            dx: 0.01,
+            dx: 0.005,
             kappa: 2.0,
             levels: 3,
             edge_model: true,
