@@ -102,8 +102,11 @@ def test_sigint_stops_a_long_run(call):
         "impact": "dyncontact.impact.run(profile='parabola:R=1', mass_ratio=10, v0_over_c1=0.01, end=80, kappa=1, memory_limit_gib=16, c1=1870.83, c2=1000)",
         "curve": "dyncontact.wedge.curve(theta_deg=86, gamma=0.5, alpha_range=(100, 900, 2000), digits=40)",
     }[call]
+    # the child takes Python's own SIGINT handler whatever it inherits (a shell's background
+    # job starts with SIGINT ignored, and Python keeps an ignored SIGINT ignored)
     script = textwrap.dedent(f"""
-        import sys, time, dyncontact
+        import signal, sys, time, dyncontact
+        signal.signal(signal.SIGINT, signal.default_int_handler)
         print("started", flush=True)
         t = time.perf_counter()
         try:
