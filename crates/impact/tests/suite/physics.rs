@@ -452,8 +452,7 @@ fn supersonic_start_next_term_is_k3() {
         case.levels = 1;
         let sol = case.solve(|_| {}).unwrap();
         let run = &sol.runs[0];
-        let m = m2(nu).sqrt();
-        let k3 = 4.0 * m * m - 4.0 * m * m * m - 0.5;
+        let [k3, _, _] = impedance_coefficients(nu);
         // least squares d = a u + b u^2, u = t/t_s
         let (mut s11, mut s12, mut s22, mut r1, mut r2) = (0.0, 0.0, 0.0, 0.0, 0.0);
         for (i, st) in run.steps.iter().enumerate() {
@@ -498,6 +497,17 @@ fn impedance(nu: f64, q: Complex64) -> Complex64 {
     delta * (m2 * m2) / n1
 }
 
+/// The impedance's Taylor coefficients zeta_1, zeta_2, zeta_3 in q^2 (`docs/impact.md`,
+/// section 6; zeta_1 = K3/c1^3, the next term of the supersonic start).
+fn impedance_coefficients(nu: f64) -> [f64; 3] {
+    let m = m2(nu).sqrt();
+    [
+        4.0 * m.powi(2) - 4.0 * m.powi(3) - 0.5,
+        3.0 / 8.0 - 2.0 * m.powi(2) + 4.0 * m.powi(4) - 2.0 * m.powi(5),
+        -5.0 / 16.0 + 1.5 * m.powi(2) - 2.0 * m.powi(4) + 0.5 * m.powi(7),
+    ]
+}
+
 /// The pressure under a parabola driven at a constant speed V, over rho c1 V, during the
 /// supersonic stage (`docs/impact.md`, section 6), at u = t/t_s < 1/4 and xi = x/b inside
 /// the cone's bound: (1/pi) Int_0^pi Re[e^(i beta) zeta(2 u^(1/2) cos phi e^(i beta))]/cos beta
@@ -532,10 +542,7 @@ fn supersonic_pressure_in_closed_form() {
     for nu in [0.25, 0.2] {
         // the integral against the series' first terms (zeta_1 = K3, zeta_2, zeta_3 from the
         // expansion; P_1 = 2 - 6 xi^2, P_2 = 6 - 60 xi^2 + 70 xi^4, P_3(0) = 20)
-        let m = m2(nu).sqrt();
-        let z1 = 4.0 * m.powi(2) - 4.0 * m.powi(3) - 0.5;
-        let z2 = 3.0 / 8.0 - 2.0 * m.powi(2) + 4.0 * m.powi(4) - 2.0 * m.powi(5);
-        let z3 = -5.0 / 16.0 + 1.5 * m.powi(2) - 2.0 * m.powi(4) + 0.5 * m.powi(7);
+        let [z1, z2, z3] = impedance_coefficients(nu);
         let u = 1e-3;
         let centre = 1.0 + 2.0 * z1 * u + 6.0 * z2 * u * u + 20.0 * z3 * u.powi(3);
         assert!((supersonic_pressure(nu, u, 0.0) - centre).abs() < 1e-11);
