@@ -424,10 +424,18 @@ pub fn run(
         return Err(InputError::new(
             "dx",
             format!(
-                "the run would take about {:.1} GiB ({} steps by {} cells on the finest grid), above the limit of {} GiB: raise --dx, shorten --end, or pass --force (or --memory-limit-gib)",
+                "the run would take about {:.1} GiB ({} steps by {} cells on the finest grid{}), above the limit of {} GiB: raise --dx, shorten --end, or pass --force (or --memory-limit-gib)",
                 cost.gib(),
                 cost.steps,
                 cost.width,
+                if c.starts_finer() && c.start_halvings > 0 {
+                    format!(
+                        ", its first steps on cells {} times finer: lower --start-halvings",
+                        1u64 << c.start_halvings.min(63)
+                    )
+                } else {
+                    String::new()
+                },
                 input.memory_limit_gib
             ),
         )

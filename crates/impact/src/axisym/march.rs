@@ -245,9 +245,11 @@ impl<'a> AxiMarch<'a> {
         if k > nr || prev_c + MARGIN_RINGS > k {
             return Err(outgrown());
         }
-        let hist = self.history(n, k);
+        let mut k = k;
+        let mut hist = self.history(n, k);
         let dt = self.dt;
-        let max_rings = self.fbar.iter().take_while(|f| f.is_some()).count().min(k);
+        let rings_of = |k: usize| self.fbar.iter().take_while(|f| f.is_some()).count().min(k);
+        let mut max_rings = rings_of(k);
         let (p, force) = match self.law {
             EdgeLaw::Kinematic => {
                 // the geometric contact for the step's own penetration (a fixed point: the
@@ -273,9 +275,22 @@ impl<'a> AxiMarch<'a> {
                 }
                 sol
             }
-            EdgeLaw::Signorini => self.active_set(prev_c, max_rings, &hist, h_pred, t)?,
+            EdgeLaw::Signorini => loop {
+                // a contact that reaches the evaluated rings' last MARGIN_RINGS may go on
+                // beyond them (rings the conditions did not see could interpenetrate): the
+                // rings widen, up to those the march was sized for, and the contact is found
+                // again
+                let sol = self.active_set(prev_c, max_rings, &hist, h_pred, t)?;
+                if sol.0.len() + MARGIN_RINGS > k && max_rings == k && k < nr {
+                    k = (k + 2 * MARGIN_RINGS).min(nr);
+                    hist = self.history(n, k);
+                    max_rings = rings_of(k);
+                    continue;
+                }
+                break sol;
+            },
         };
-        if k < geometric && p.len() + MARGIN_RINGS > k {
+        if p.len() + MARGIN_RINGS > k && max_rings == k {
             return Err(outgrown());
         }
         let h = self.penetration(h_pred, force);

@@ -369,6 +369,34 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         a + b
     }
 
+    /// The data of step n over the cells 0..=imax: the history sums (less the last
+    /// hand-over's defect while it lasts) and the profile's cell means.
+    fn step_data(
+        &mut self,
+        n: usize,
+        imax: usize,
+        h_pred: T,
+        coupling: T,
+        t: T,
+    ) -> Result<StepData<T>> {
+        let mut hist = self.history(n, imax)?;
+        if let Some(handover) = &self.handover {
+            let weight = handover.weight(n);
+            if weight > 0.0 {
+                for (i, h) in hist.0.iter_mut().enumerate() {
+                    *h -= handover.at(i) * weight;
+                }
+            }
+        }
+        Ok(StepData {
+            hist,
+            fbar: (0..=imax).map(|i| self.profile_mean(i)).collect(),
+            h_pred,
+            coupling,
+            t,
+        })
+    }
+
     /// Advances one step. Returns whether the striker is in contact at the step's end. Off
     /// the surface the striker flies free (a free striker keeps its speed) and the march goes
     /// on: the contact conditions are tried at every step, so a re-impact is found
@@ -402,7 +430,18 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         // the cell containing an edge b: x_c - dx/2 <= b < x_c + dx/2
         let edge_cell = move |b: T| -> usize { (b / dxv + 0.5).to_f64().floor().max(0.0) as usize };
         let b_prev = self.steps.last().map(|s| s.b).unwrap_or(zero);
-        let imax = (k0 + 3)
+        let model = self.edge_model(kin_b)?;
+        let signorini = matches!(self.law, EdgeLaw::Signorini);
+        let geometric = !signorini || matches!(model, Some(m) if m.geometric);
+        let sub_cell = matches!(model, Some(m) if m.sub_cell) && edge_cell(b_prev) >= 2;
+        // the cells whose contact conditions the step checks (`docs/impact.md`, section 9,
+        // the contact's window): the last contact and three cells beyond it, and where the
+        // contact is found among whole cells the reach of one step more (an edge below c1
+        // advances by at most kappa cells a step; the window widens below while the contact
+        // reaches its end); the kinematic edge and the last edge's cell with three more
+        let reach = self.tables.reach_at(0);
+        let ahead = if geometric || sub_cell { 0 } else { reach };
+        let mut imax = (k0 + 3 + ahead)
             .max(kin_k(kin_b) + 3)
             .max(edge_cell(b_prev) + 3)
             .min(self.kcap + 2);
@@ -426,27 +465,8 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 });
             }
         }
-        let mut hist = self.history(n, imax)?;
-        if let Some(handover) = &self.handover {
-            let weight = handover.weight(n);
-            if weight > 0.0 {
-                for (i, h) in hist.0.iter_mut().enumerate() {
-                    *h -= handover.at(i) * weight;
-                }
-            }
-        }
-        let data = StepData {
-            hist,
-            fbar: (0..=imax).map(|i| self.profile_mean(i)).collect(),
-            h_pred,
-            coupling,
-            t,
-        };
-        let hist = &data.hist;
-        let model = self.edge_model(kin_b)?;
+        let mut data = self.step_data(n, imax, h_pred, coupling, t)?;
         let mut set = None;
-        let signorini = matches!(self.law, EdgeLaw::Signorini);
-        let geometric = !signorini || matches!(model, Some(m) if m.geometric);
         // whether a branch below has settled the step's contact (else: the active set of
         // whole cells, which can shrink the contact to nothing)
         let mut settled = false;
@@ -482,6 +502,13 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                         }
                         _ => {
                             let k = kin_k(b).min(self.kcap);
+                            if k + 1 > imax {
+                                // a tensile force raised h, and the edge, past the cells
+                                // considered (a light striker's fixed point): they widen
+                                imax = (k + 4).min(self.kcap + 2);
+                                data = self.step_data(n, imax, h_pred, coupling, t)?;
+                                kept = None;
+                            }
                             let (p, f) = self.solve_set(&data, k)?;
                             (k, p, f)
                         }
@@ -506,7 +533,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                     set = None;
                 }
             }
-            (false, Some(m)) if m.sub_cell && edge_cell(b_prev) >= 2 => {
+            (false, Some(m)) if sub_cell => {
                 if let Some(s) = self.free_edge(&data, m, edge_cell(b_prev))? {
                     set = Some((s, true));
                     settled = true;
@@ -515,10 +542,25 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
             _ => {}
         }
         if !settled {
-            if let Some(found) = self.whole_cells(&data, k0.min(self.kcap), imax)? {
-                set = Some((found, true));
+            // a contact that reaches the window's last cells may go on beyond them (cells
+            // the conditions did not see could interpenetrate, and their entry later would
+            // put energy in): the window widens by the reach and the contact is found again
+            loop {
+                let found = self.whole_cells(&data, k0.min(self.kcap), imax)?;
+                let top = imax.min(self.kcap).min(data.fbar.len() - 1);
+                match found {
+                    Some((k, ..)) if k + 3 > top && top < self.kcap => {
+                        imax = (imax + reach + 3).min(self.kcap + 2);
+                        data = self.step_data(n, imax, h_pred, coupling, t)?;
+                    }
+                    found => {
+                        set = found.map(|f| (f, true));
+                        break;
+                    }
+                }
             }
         }
+        let hist = &data.hist;
         let in_contact = set.is_some();
         let was_in_contact = self.steps.last().is_some_and(|s| !s.pressure.is_empty());
         if was_in_contact && !in_contact {
