@@ -11,9 +11,10 @@
 //! striker and the shell, no smaller than before). They were captured again when the levels
 //! began to start on finer grids (`docs/impact.md`, section 11): every changed value moved by
 //! at most half the sum of its old and new stated errors (the early b and force most), and
-//! the grid gained `start_halvings`. And when the step's contact window took the reach of one
-//! step beyond the contact (`docs/impact.md`, section 9, the contact's window): the values
-//! moved by rounding only, at most 2.8e-9 relative.
+//! the grid gained `start_halvings`. And when the conservative bound of a history whose three
+//! levels show no order took the factor at p = 1/2, 2.41, instead of 1 at p <= 0 (and
+//! Richardson's unbounded one as p goes to 0 from above; `docs/impact.md`, section 5): those
+//! estimates grew 2.41 times, every value unchanged.
 
 use std::path::Path;
 use std::process::Command;

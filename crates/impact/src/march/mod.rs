@@ -436,15 +436,21 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         let sub_cell = matches!(model, Some(m) if m.sub_cell) && edge_cell(b_prev) >= 2;
         // the cells whose contact conditions the step checks (`docs/impact.md`, section 9,
         // the contact's window): the last contact and three cells beyond it, and where the
-        // contact is found among whole cells the reach of one step more (an edge below c1
-        // advances by at most kappa cells a step; the window widens below while the contact
-        // reaches its end); the kinematic edge and the last edge's cell with three more
+        // contact is found among whole cells and one step reaches further than three cells
+        // (kappa > 3) the reach of one step more (an edge below c1 advances by at most kappa
+        // cells a step; the window widens below while the contact reaches its end); the
+        // kinematic edge and the last edge's cell with three more
         let reach = self.tables.reach_at(0);
-        let ahead = if geometric || sub_cell { 0 } else { reach };
-        let mut imax = (k0 + 3 + ahead)
+        let ahead = if geometric || sub_cell || reach <= 3 {
+            0
+        } else {
+            reach
+        };
+        let base = (k0 + 3)
             .max(kin_k(kin_b) + 3)
             .max(edge_cell(b_prev) + 3)
             .min(self.kcap + 2);
+        let mut imax = base.max((k0 + 3 + ahead).min(self.kcap + 2));
         if let Some(limit) = self.memory {
             // the memory the history holds at this step, for its widest contact so far
             let width = (imax + 1)
@@ -549,7 +555,7 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 let found = self.whole_cells(&data, k0.min(self.kcap), imax)?;
                 let top = imax.min(self.kcap).min(data.fbar.len() - 1);
                 match found {
-                    Some((k, ..)) if k + 3 > top && top < self.kcap => {
+                    Some((k, ..)) if ahead > 0 && k + 3 > top && top < self.kcap => {
                         imax = (imax + reach + 3).min(self.kcap + 2);
                         data = self.step_data(n, imax, h_pred, coupling, t)?;
                     }
@@ -582,7 +588,12 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 v0 - dt * f / mass,
             ),
         };
-        let (w, ws): (Vec<T>, Vec<T>) = (0..=imax).map(|i| self.displacements(i, hist, &p)).unzip();
+        // the displacements kept for the next step (its work and its edge's mid-step gap):
+        // over the cells the narrower window would have held, and three beyond the contact
+        let kept_to = base.max(p.len() + 2).min(imax);
+        let (w, ws): (Vec<T>, Vec<T>) = (0..=kept_to)
+            .map(|i| self.displacements(i, hist, &p))
+            .unzip();
         let ws = if self.striker.is_some() {
             ws
         } else {
