@@ -11,10 +11,7 @@
 //! striker and the shell, no smaller than before). They were captured again when the levels
 //! began to start on finer grids (`docs/impact.md`, section 11): every changed value moved by
 //! at most half the sum of its old and new stated errors (the early b and force most), and
-//! the grid gained `start_halvings`. And when the conservative bound of a history whose three
-//! levels show no order took the factor at p = 1/2, 2.41, instead of 1 at p <= 0 (and
-//! Richardson's unbounded one as p goes to 0 from above; `docs/impact.md`, section 5): those
-//! estimates grew 2.41 times, every value unchanged.
+//! the grid gained `start_halvings`.
 
 use std::path::Path;
 use std::process::Command;

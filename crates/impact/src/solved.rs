@@ -141,18 +141,14 @@ fn richardson_factor(p: f64) -> f64 {
     1.0 / (2f64.powf(p) - 1.0)
 }
 
-/// The conservative bound's factor for the observed order `p`: Richardson's where the three
-/// levels show an order (above [`ORDER_SHOWN`]), never below 1 (no order above the first
-/// credited); where they show none, the factor at [`ORDER_SHOWN`], 1/(2^(1/2) - 1) = 2.41
-/// (Richardson's tail sum grows without bound as the observed order goes to 0, where the
-/// levels do not converge at all: a bound of 500 times the value at p = 0.003 said nothing
-/// more); 1 with two levels (no order observed).
+/// The conservative bound's factor for the observed order `p`: Richardson's where p is
+/// positive, never below 1 (no order above the first credited), and at most its value at
+/// [`ORDER_SHOWN`], 1/(2^(1/2) - 1) = 2.41 (Richardson's tail sum grows without bound as p
+/// goes to 0, where the levels do not converge at all: a bound of 2000 times the value at
+/// p = 0.003 said nothing more); 1 without an order.
 fn conservative_factor(p: Option<f64>) -> f64 {
-    match p {
-        Some(p) if p > ORDER_SHOWN => richardson_factor(p).max(1.0),
-        Some(_) => richardson_factor(ORDER_SHOWN),
-        None => 1.0,
-    }
+    p.filter(|p| *p > 0.0)
+        .map_or(1.0, |p| richardson_factor(p.max(ORDER_SHOWN)).max(1.0))
 }
 
 /// The lowest observed order at which the sharp estimator is used.
@@ -335,7 +331,14 @@ pub(crate) fn level_estimate(values: &[f64]) -> Option<f64> {
     let d1 = (values[0] - values[1]).abs();
     let d2 = values.get(2).map(|c| (values[1] - c).abs());
     let factor = match d2 {
-        Some(d2) if d1 > 0.0 && d2 > 0.0 => conservative_factor(Some((d2 / d1).log2())),
+        Some(d2) if d1 > 0.0 && d2 > 0.0 => {
+            let p = (d2 / d1).log2();
+            if p > ORDER_SHOWN {
+                conservative_factor(Some(p))
+            } else {
+                2.0
+            }
+        }
         _ => 1.0,
     };
     Some(ESTIMATE_SAFETY * d1.max(0.5 * d2.unwrap_or(0.0)) * factor)
