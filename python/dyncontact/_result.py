@@ -216,7 +216,8 @@ class RunResult(Report):
     """``impact.run``: histories as float64 arrays over ``c1t_over_R`` (``h_over_R``,
     ``b_over_R``, ``force_over_rho_c1sq_R``, ...), ``error_estimate[key]`` of the same shape,
     ``error_model[key]`` how each was formed (``estimator`` ``"richardson"`` or
-    ``"conservative"``, ``safety``, ``order_credited``, ``conservative_rows``), the rebound's
+    ``"conservative"``, ``safety``, ``order_credited``, ``conservative_rows``, and where there
+    are, ``cell_floor_rows`` and ``order_shown``), the rebound's
     numbers, the energy audit, and ``pressure`` as :class:`PressureProfiles`."""
 
     def _init(self, text: str, data: Any, decimal: bool) -> None:

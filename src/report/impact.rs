@@ -1076,16 +1076,25 @@ impl RunReport {
                 .order_credited
                 .map(|p| format!(", order credited {p:.3}"))
                 .unwrap_or_default();
+            let floor = if m.cell_floor_rows > 0 {
+                format!("; at least half a cell at {} rows", m.cell_floor_rows)
+            } else {
+                String::new()
+            };
+            let shown = m
+                .order_shown
+                .map(|o| {
+                    format!(
+                        "; order {:.3} shown row by row, safety {}, at {} rows",
+                        o.order_credited, o.safety, o.rows
+                    )
+                })
+                .unwrap_or_default();
             s.push_str(&format!(
-                "# error_model: {key}: {} (safety {}{order}; conservative rows: {}{})\n",
+                "# error_model: {key}: {} (safety {}{order}; conservative rows: {}{floor}{shown})\n",
                 m.estimator.name(),
                 m.safety,
                 m.conservative_rows,
-                if m.cell_floor_rows > 0 {
-                    format!("; at least half a cell at {} rows", m.cell_floor_rows)
-                } else {
-                    String::new()
-                }
             ));
         }
         for (key, reason) in &self.unavailable {

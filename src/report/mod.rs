@@ -244,7 +244,8 @@ pub fn print_floor(digits: usize, bits: u32) -> f64 {
 
 /// One history's error model as JSON (`error_model.<key>` of an impact run, plane or
 /// axisymmetric): its `estimator`, `safety`, `order_credited` (when one is),
-/// `conservative_rows` and `cell_floor_rows` (when there are).
+/// `conservative_rows`, and `cell_floor_rows` and `order_shown` (its `rows`, `safety` and
+/// `order_credited`; when there are).
 pub(crate) fn error_model_json(m: &::impact::ErrorModel) -> serde_json::Value {
     let mut o = serde_json::Map::new();
     o.insert("estimator".into(), serde_json::json!(m.estimator.name()));
@@ -260,6 +261,16 @@ pub(crate) fn error_model_json(m: &::impact::ErrorModel) -> serde_json::Value {
         o.insert(
             "cell_floor_rows".into(),
             serde_json::json!(m.cell_floor_rows),
+        );
+    }
+    if let Some(s) = m.order_shown {
+        o.insert(
+            "order_shown".into(),
+            serde_json::json!({
+                "rows": s.rows,
+                "safety": s.safety,
+                "order_credited": s.order_credited,
+            }),
         );
     }
     serde_json::Value::Object(o)

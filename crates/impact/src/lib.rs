@@ -34,7 +34,7 @@ pub use profile::Profile;
 pub use run::Run;
 pub use solve::{Progress, Solvable};
 pub use solved::{
-    coarse_means, ErrorModel, Estimator, HistoryRow, Models, Orders, PressureProfile, Rebound,
-    SolvedImpact, Stage, StrikerEnergyStep, Value, CYLINDER_MODES_BELOW, PEAK_DROP,
+    coarse_means, ErrorModel, Estimator, HistoryRow, Models, OrderShown, Orders, PressureProfile,
+    Rebound, SolvedImpact, Stage, StrikerEnergyStep, Value, CYLINDER_MODES_BELOW, PEAK_DROP,
 };
 pub use striker::{ShellStriker, Striker, StrikerMaterial};

@@ -60,6 +60,23 @@ pub struct ErrorModel {
     /// The rows whose estimate is at least half the finest cell (b's, where the free edge is
     /// captured cell by cell: faster than 0.8 c_R, or without the edge model).
     pub cell_floor_rows: usize,
+    /// The rows whose estimate is Richardson's at the order every row of their window shows
+    /// on its own ([`ORDER_SHOWN_ROW_TOLERANCE`]; h's and b's, `docs/impact.md` section 5), where it
+    /// is below the policy's: how many, at what safety and order (`None` where no row took
+    /// it).
+    pub order_shown: Option<OrderShown>,
+}
+
+/// The rows of a history whose estimate took the order their window shows row by row
+/// ([`ErrorModel::order_shown`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OrderShown {
+    /// How many rows.
+    pub rows: usize,
+    /// The safety factor on their level differences.
+    pub safety: f64,
+    /// The order credited: the history's observed order taken in [1, 2].
+    pub order_credited: f64,
 }
 
 impl ErrorModel {
@@ -72,6 +89,7 @@ impl ErrorModel {
             order_credited: None,
             conservative_rows: rows,
             cell_floor_rows: 0,
+            order_shown: None,
         }
     }
 }
@@ -82,10 +100,69 @@ impl ErrorModel {
 struct SharpPolicy {
     safety: f64,
     order_cap: f64,
+    /// The safety factor of Richardson's estimate at the order the rows show one by one
+    /// ([`shown_order_estimate`]), where the history takes it.
+    shown_safety: Option<f64>,
 }
 
 const fn policy(safety: f64, order_cap: f64) -> Option<SharpPolicy> {
-    Some(SharpPolicy { safety, order_cap })
+    Some(SharpPolicy {
+        safety,
+        order_cap,
+        shown_safety: None,
+    })
+}
+
+/// h's and b's policy: [`policy`] and, where every row of the window shows the order on its
+/// own, Richardson's estimate at that order with the safety [`SHOWN_SAFETY`].
+const fn shown_policy(safety: f64, order_cap: f64) -> Option<SharpPolicy> {
+    Some(SharpPolicy {
+        safety,
+        order_cap,
+        shown_safety: Some(SHOWN_SAFETY),
+    })
+}
+
+/// The safety factor on h's and b's Richardson estimate where every row of the window shows
+/// the order (`docs/impact.md`, section 5): at 3 the estimate is three times the error of an
+/// exactly second-order history; over the twelve-case sweep at R/200 the largest ratios of
+/// actual to stated stayed where they were (rows outside the check) and b's median rose from
+/// 0.080 to 0.12.
+const SHOWN_SAFETY: f64 = 3.0;
+
+/// The scheme's order (cell means in space and time, the midpoint rule in time): the most a
+/// row's shown order is credited.
+pub const ORDER_SCHEME: f64 = 2.0;
+
+/// How far, in log2, each row's ratio of the level differences, (Q_2 - Q_4)/(Q_1 - Q_2), may
+/// lie from 2^p, p the history's observed order taken in [1, [`ORDER_SCHEME`]], for the order
+/// to count as shown in that row (`docs/impact.md`, section 5): 0.3, a ratio within a factor
+/// 1.23 of 2^p, and of the same sign.
+pub const ORDER_SHOWN_ROW_TOLERANCE: f64 = 0.3;
+
+/// Richardson's estimate of a row whose window shows the order row by row: with the level
+/// differences `d1[j]` = Q_1 - Q_2 and `d2[j]` = Q_2 - Q_4 over the window's rows and the
+/// history's observed order `p`, `None` unless every row's ratio d2/d1 lies within
+/// [`ORDER_SHOWN_ROW_TOLERANCE`] (in log2) of 2^p' with p' = p taken in [1, [`ORDER_SCHEME`]];
+/// then `safety` times the largest of |d1| and |d2|/2^p' over the window, times
+/// 1/(2^p' - 1).
+fn shown_order_estimate(
+    d1: impl Iterator<Item = f64>,
+    d2: impl Iterator<Item = f64>,
+    p: f64,
+    safety: f64,
+) -> Option<f64> {
+    let p = p.clamp(1.0, ORDER_SCHEME);
+    let scale = 0.5f64.powf(p);
+    let mut d: f64 = 0.0;
+    for (a, b) in d1.zip(d2) {
+        let r = b / a;
+        if !(r.is_finite() && r > 0.0 && (r.log2() - p).abs() <= ORDER_SHOWN_ROW_TOLERANCE) {
+            return None;
+        }
+        d = d.max(a.abs()).max(scale * b.abs());
+    }
+    (d > 0.0).then(|| safety * d * richardson_factor(p))
 }
 
 /// The policies of the runs outside the start on finer grids (a deformable striker, the flat
@@ -100,8 +177,8 @@ const fn policy(safety: f64, order_cap: f64) -> Option<SharpPolicy> {
 /// conservative bound.
 fn plain_policy(q: usize) -> Option<SharpPolicy> {
     match q {
-        Q_H => policy(2.0, 1.0),
-        Q_B => policy(2.0, 1.0),
+        Q_H => shown_policy(2.0, 1.0),
+        Q_B => shown_policy(2.0, 1.0),
         Q_FORCE => policy(5.0, 2.0),
         _ => None,
     }
@@ -118,9 +195,9 @@ fn plain_policy(q: usize) -> Option<SharpPolicy> {
 /// defect, once conservative, take the observed order too.
 fn started_policy(q: usize) -> Option<SharpPolicy> {
     match q {
-        Q_H => policy(1.25, 1.5),
+        Q_H => shown_policy(1.25, 1.5),
         Q_HDOT => policy(1.5, 1.5),
-        Q_B => policy(5.5, 2.0),
+        Q_B => shown_policy(5.5, 2.0),
         Q_FORCE => policy(5.0, 2.0),
         Q_WORK => policy(3.5, 1.5),
         Q_DEFECT => policy(2.0, 1.5),
@@ -618,7 +695,9 @@ impl<T: Scalar> SolvedImpact<T> {
             let p = ords[q].filter(|p| *p > ORDER_SHOWN)?;
             Some((policy, p.min(policy.order_cap)))
         };
-        let est = |q: usize, i: usize| -> Option<f64> {
+        // the estimate of history q at row i, and whether it took the order the window's
+        // rows show one by one
+        let est_with = |q: usize, i: usize| -> Option<(f64, bool)> {
             if self.runs.len() < 2 {
                 return None;
             }
@@ -626,14 +705,20 @@ impl<T: Scalar> SolvedImpact<T> {
             // pair scaled down by the order credited
             let credited = sharp(q).filter(|_| !conservative_row(q, i));
             let coarse_scale = credited.map_or(0.5, |(_, p)| 0.5f64.powf(p.max(1.0)));
+            let window =
+                i.saturating_sub(ESTIMATE_WINDOW)..(i + ESTIMATE_WINDOW + 1).min(nuse.max(i + 1));
+            // the differences in T, then rounded
+            let d1 = |j: usize| (samples[q][0][j] - samples[q][1][j]).to_f64();
+            let d2 = |j: usize| {
+                samples[q]
+                    .get(2)
+                    .map(|c| (samples[q][1][j] - c[j]).to_f64())
+            };
             let mut d: f64 = 0.0;
-            for j in
-                i.saturating_sub(ESTIMATE_WINDOW)..(i + ESTIMATE_WINDOW + 1).min(nuse.max(i + 1))
-            {
-                // the differences in T, then rounded
-                d = d.max((samples[q][0][j] - samples[q][1][j]).abs().to_f64());
-                if let Some(c) = samples[q].get(2) {
-                    d = d.max(coarse_scale * (samples[q][1][j] - c[j]).abs().to_f64());
+            for j in window.clone() {
+                d = d.max(d1(j).abs());
+                if let Some(d2) = d2(j) {
+                    d = d.max(coarse_scale * d2.abs());
                 }
             }
             if !d.is_finite() {
@@ -644,12 +729,42 @@ impl<T: Scalar> SolvedImpact<T> {
             } else {
                 0.0
             };
-            Some(floor.max(match credited {
+            let policy_estimate = match credited {
                 // Richardson with the observed order up to the cap
                 Some((policy, p)) => policy.safety * d * richardson_factor(p),
                 // the conservative bound: no order above one credited
                 None => ESTIMATE_SAFETY * d * conservative_factor(ords[q]),
-            }))
+            };
+            // Richardson at the order the rows show one by one, where the policy takes it
+            let shown = credited
+                .and_then(|(policy, _)| policy.shown_safety)
+                .zip(ords[q])
+                .filter(|_| samples[q].len() >= 3)
+                .and_then(|(safety, p)| {
+                    shown_order_estimate(
+                        window.clone().map(d1),
+                        window.clone().map(|j| d2(j).unwrap_or(f64::NAN)),
+                        p,
+                        safety,
+                    )
+                })
+                .filter(|e| *e < policy_estimate);
+            Some(match shown {
+                Some(e) => (floor.max(e), true),
+                None => (floor.max(policy_estimate), false),
+            })
+        };
+        let est = |q: usize, i: usize| est_with(q, i).map(|(e, _)| e);
+        let order_shown = |q: usize, policy: SharpPolicy| {
+            let rows = (0..nuse.min(times.len()))
+                .filter(|&i| est_with(q, i).is_some_and(|(_, shown)| shown))
+                .count();
+            let (safety, p) = policy.shown_safety.zip(ords[q])?;
+            (rows > 0).then(|| OrderShown {
+                rows,
+                safety,
+                order_credited: p.clamp(1.0, ORDER_SCHEME),
+            })
         };
         let conservative_rows =
             |q: usize| (0..times.len()).filter(|&i| conservative_row(q, i)).count();
@@ -664,6 +779,7 @@ impl<T: Scalar> SolvedImpact<T> {
                     order_credited: Some(p),
                     conservative_rows: conservative_rows(q),
                     cell_floor_rows,
+                    order_shown: order_shown(q, policy),
                 },
                 None => ErrorModel {
                     estimator: Estimator::Conservative,
@@ -671,6 +787,7 @@ impl<T: Scalar> SolvedImpact<T> {
                     order_credited: ords[q].filter(|p| *p > 0.0).map(|p| p.min(1.0)),
                     conservative_rows: times.len(),
                     cell_floor_rows,
+                    order_shown: None,
                 },
             }
         };
@@ -1076,3 +1193,69 @@ impl<T: Scalar> SolvedImpact<T> {
 /// The share of the largest force the run's last force must fall below for the largest to
 /// be reported as a peak ([`SolvedImpact::peak_force`]).
 pub const PEAK_DROP: f64 = 0.99;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Three levels of a history Q(dx) = Q* + C dx^p + D dx^3 at dx = 1, 2, 4 over a
+    /// window of report times (C varying slowly from row to row): (Q_1 - Q_2, Q_2 - Q_4)
+    /// per row and the finest level's actual error.
+    fn levels(p: f64, d: f64) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        let (mut d1, mut d2, mut err) = (Vec::new(), Vec::new(), Vec::new());
+        for j in 0..9 {
+            let c = 1e-5 * (1.0 + 0.05 * j as f64);
+            let q = |dx: f64| c * dx.powf(p) + d * dx.powi(3);
+            d1.push(q(1.0) - q(2.0));
+            d2.push(q(2.0) - q(4.0));
+            err.push(q(1.0).abs());
+        }
+        (d1, d2, err)
+    }
+
+    #[test]
+    fn the_shown_order_estimate_is_safety_times_the_error_of_an_exact_order() {
+        // an exactly second-order history: the estimate is the safety times the error
+        let (d1, d2, err) = levels(2.0, 0.0);
+        let e = shown_order_estimate(d1.iter().copied(), d2.iter().copied(), 2.0, 3.0)
+            .expect("the rows show order 2");
+        let worst = err.iter().copied().fold(0.0, f64::max);
+        assert!((e / worst - 3.0).abs() < 1e-12, "{e} against {worst}");
+        // an observed order above the scheme's is credited at 2 only
+        let e3 = shown_order_estimate(d1.iter().copied(), d2.iter().copied(), 2.2, 3.0)
+            .expect("the rows show order 2 within the tolerance");
+        assert_eq!(e3, e);
+        // first order: the rows' ratios are 2; an observed order below 1 is credited at 1
+        let (d1, d2, err) = levels(1.0, 0.0);
+        let e = shown_order_estimate(d1.iter().copied(), d2.iter().copied(), 0.8, 3.0)
+            .expect("the rows show order 1");
+        let worst = err.iter().copied().fold(0.0, f64::max);
+        assert!((e / worst - 3.0).abs() < 1e-12, "{e} against {worst}");
+    }
+
+    #[test]
+    fn the_shown_order_estimate_is_refused_where_a_row_does_not_show_it() {
+        // the history's order is 2 but one row's ratio is 2^2.5 (a third-order part there)
+        let (d1, mut d2, _) = levels(2.0, 0.0);
+        d2[4] = d1[4] * 2f64.powf(2.5);
+        assert!(shown_order_estimate(d1.iter().copied(), d2.iter().copied(), 2.0, 3.0).is_none());
+        // one row's differences of opposite signs (the finest pair crossing zero)
+        let (mut d1, d2, _) = levels(2.0, 0.0);
+        d1[7] = -d1[7];
+        assert!(shown_order_estimate(d1.iter().copied(), d2.iter().copied(), 2.0, 3.0).is_none());
+        // a row where the finest pair agrees exactly
+        let (mut d1, d2, _) = levels(2.0, 0.0);
+        d1[0] = 0.0;
+        assert!(shown_order_estimate(d1.iter().copied(), d2.iter().copied(), 2.0, 3.0).is_none());
+        // a mixed history whose rows' ratio drifts from 4 towards 8 (the second-order part
+        // no longer dominant on the coarse pair): refused
+        let (d1, d2, _) = levels(2.0, 1e-5);
+        assert!(shown_order_estimate(d1.iter().copied(), d2.iter().copied(), 2.0, 3.0).is_none());
+        // a missing coarsest level (NaN)
+        let (d1, _, _) = levels(2.0, 0.0);
+        assert!(
+            shown_order_estimate(d1.iter().copied(), d1.iter().map(|_| f64::NAN), 2.0, 3.0)
+                .is_none()
+        );
+    }
+}

@@ -19,16 +19,25 @@ use sweep::{cases, compare, median, PICKS};
 /// striker's where the order shows; the kinematic law keeps the conservative bound for the
 /// penetration speed, the work and the energy defect.
 /// The medians held by [`estimates_bound_the_actual_errors_and_are_sharp`].
-const LEAST_SLOW: [f64; PICKS.len()] = [0.067, 0.052, 0.078, 0.032, 0.032, 0.070, 0.074];
+const LEAST_SLOW: [f64; PICKS.len()] = [0.138, 0.083, 0.069, 0.032, 0.032, 0.070, 0.074];
 /// The medians held by [`estimates_of_fast_strikers_bound_the_actual_errors`].
 const LEAST_FAST: [f64; PICKS.len()] = [0.168, 0.006, 0.0075, 0.073, 0.073, 0.051, 0.43];
 
-fn check_estimates(shorter: &[(&str, f64)], least: [f64; PICKS.len()], sharp_least: usize) {
+/// `shown_least`: how many of the cases' h and b histories must take the order their rows
+/// show one by one at some rows (`ErrorModel::order_shown`).
+fn check_estimates(
+    shorter: &[(&str, f64)],
+    least: [f64; PICKS.len()],
+    sharp_least: usize,
+    shown_least: usize,
+) {
     let dx = 0.01;
     let mut ratios = vec![Vec::new(); PICKS.len()];
     let mut run = 0;
     // the start's extra sharp histories (the penetration speed, the work, the defect)
     let mut sharp_started = 0;
+    // the h and b histories that took the order shown row by row somewhere
+    let mut shown = 0;
     for (name, mut base) in cases() {
         let Some(&(_, end)) = shorter.iter().find(|(n, _)| *n == name) else {
             continue;
@@ -44,6 +53,20 @@ fn check_estimates(shorter: &[(&str, f64)], least: [f64; PICKS.len()], sharp_lea
         for m in [models.h, models.b, models.force] {
             assert!(m.safety > 0.0, "{name}: {m:?}");
         }
+        for m in [models.h, models.b] {
+            if let Some(o) = m.order_shown {
+                assert!(
+                    o.rows > 0 && (1.0..=2.0).contains(&o.order_credited),
+                    "{name}: {m:?}"
+                );
+                shown += 1;
+            }
+        }
+        assert!(
+            models.force.order_shown.is_none(),
+            "{name}: {:?}",
+            models.force
+        );
         // b's and the force's last rows are conservative where their crossing fits are
         // one-sided there: a level that neither marched past the end nor left the contact
         let whole_windows = sol.runs.iter().all(|r| r.last_reports_centred());
@@ -103,6 +126,10 @@ fn check_estimates(shorter: &[(&str, f64)], least: [f64; PICKS.len()], sharp_lea
         sharp_started >= sharp_least,
         "{sharp_started} of the started cases' dh/dt, work and defect took the sharp estimator"
     );
+    assert!(
+        shown >= shown_least,
+        "{shown} of the cases' h and b histories took the order shown row by row"
+    );
     let summary: Vec<(f64, f64)> = ratios
         .iter_mut()
         .map(|r| (r.iter().copied().fold(0.0, f64::max), median(r)))
@@ -119,10 +146,11 @@ fn check_estimates(shorter: &[(&str, f64)], least: [f64; PICKS.len()], sharp_lea
 }
 
 /// Four of the sweep's cases on shorter runs (the reference case under both laws, the wedge,
-/// the kinematic power law k = 3) at R/100: the medians of actual/stated are 0.089 (h), 0.070
-/// (b), 0.104 (the force), 0.043 (dh/dt and the kinetic energy), 0.094 (the work) and 0.099
-/// (the energy defect),
-/// held at three quarters of that (over the full sweep at R/100: 0.21 (h), 0.070 (b), 0.11
+/// the kinematic power law k = 3) at R/100: the medians of actual/stated are 0.184 (h), 0.111
+/// (b), 0.092 (the force), 0.043 (dh/dt and the kinetic energy), 0.094 (the work) and 0.099
+/// (the energy defect); the two kinematic cases' h and b take the order their rows show one
+/// by one at most rows (h's and b's medians were held at 0.067 and 0.052 before);
+/// held at three quarters of that (over the full sweep at R/100: 0.24 (h), 0.090 (b), 0.11
 /// (the force), 0.16 (dh/dt and the kinetic energy), 0.12 (the work) and 0.14 (the energy
 /// defect); the aim is 0.1; the early part weighs more in short runs).
 #[test]
@@ -135,6 +163,7 @@ fn estimates_bound_the_actual_errors_and_are_sharp() {
             ("wedge 80", 2.0),
         ],
         LEAST_SLOW,
+        4,
         4,
     );
 }
@@ -153,6 +182,7 @@ fn estimates_of_fast_strikers_bound_the_actual_errors() {
         &[("light fast nu .3", 3.2), ("circle M 100 V .05", 2.4)],
         LEAST_FAST,
         2,
+        0,
     );
 }
 
