@@ -432,7 +432,19 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         let b_prev = self.steps.last().map(|s| s.b).unwrap_or(zero);
         let model = self.edge_model(kin_b)?;
         let signorini = matches!(self.law, EdgeLaw::Signorini);
-        let geometric = !signorini || matches!(model, Some(m) if m.geometric);
+        // a free edge that has left the supersonic stage returns to it only where the
+        // geometric edge itself outruns c1 over the step (`docs/impact.md`, section 4, the
+        // supersonic stage's end): the edge model's speed, over the last reported edges,
+        // scatters by several percent where the edge is captured cell by cell, and an edge
+        // just below c1 read as supersonic at one step and subsonic at the next had locked
+        // into a cycle of geometric and free steps
+        let left_supersonic = self
+            .steps
+            .last()
+            .is_some_and(|s| !s.pressure.is_empty() && s.edge_time != s.t);
+        let outruns = || kin(h0).is_some_and(|b0| kin_b - b0 > dt);
+        let geometric = !signorini
+            || (matches!(model, Some(m) if m.geometric) && (!left_supersonic || outruns()));
         let sub_cell = matches!(model, Some(m) if m.sub_cell) && edge_cell(b_prev) >= 2;
         // the cells whose contact conditions the step checks (`docs/impact.md`, section 9,
         // the contact's window): the last contact and three cells beyond it, and where the
