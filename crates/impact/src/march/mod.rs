@@ -631,6 +631,23 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 reason: "a non-finite penetration or force".into(),
             });
         }
+        // a mean contact pressure above 2 rho c1^2 (strains of order one, where linear
+        // elasticity says nothing; a plane wave at the speed c1 carries rho c1^2) is a march
+        // gone unstable, not a result (`docs/impact.md`, section 9, the force's bound)
+        let width = b.max(kin_b).max(zero) + self.dx;
+        let bound = width * 4.0 / (m * m);
+        if f.abs() > bound {
+            let rho_c1sq = T::of(1.0) / (m * m);
+            return Err(ImpactError::Step {
+                time: format!("{:.6}", t.to_f64()),
+                reason: format!(
+                    "the force reached {:.3e} rho c1^2 R over a contact of half-width {:.3e} R, a mean pressure above 2 rho c1^2 (strains of order one): the march has gone unstable, as it does on nearly incompressible half-planes (poisson = {:.4}) under the kinematic law or driven (docs/impact.md, section 9): lower --poisson",
+                    (f / rho_c1sq).to_f64(),
+                    width.to_f64(),
+                    self.tables.half_plane().poisson().to_f64()
+                ),
+            });
+        }
         self.history.push(&mut *self.tables, &p)?;
         if let (Some(s), Some(hs)) = (self.striker.as_deref_mut(), self.striker_history.as_mut()) {
             hs.push(s, &p)?;

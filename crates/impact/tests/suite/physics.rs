@@ -861,3 +861,48 @@ fn a_handover_just_after_the_supersonic_stage_keeps_the_edge_free() {
     );
     assert!(worst.0 < 2e-4, "{worst:?}");
 }
+
+/// The force's bound (`docs/impact.md`, section 9): on a nearly incompressible half-plane
+/// (nu = 0.49) the parabola driven at V/c1 = 0.01 under the kinematic law goes unstable (its
+/// force had reached 1.2e8 rho c1^2 R by c1 t/R = 2, returned as a result); a step whose mean
+/// contact pressure passes 2 rho c1^2 now ends the run with an error naming the Poisson's
+/// ratio. The same case on nu = 0.45 runs to its end, its force far below the bound.
+#[test]
+fn an_unstable_march_is_refused_not_reported() {
+    let case = |nu: f64| {
+        let mut c = ImpactCase::new(
+            nu,
+            Profile::Parabola { radius: 1.0 },
+            Drive::Speed(0.01),
+            EdgeLaw::Kinematic,
+            2.0,
+        );
+        c.levels = 1;
+        c
+    };
+    match case(0.49).solve(|_| {}) {
+        Err(ImpactError::Step { time, reason }) => {
+            eprintln!("refused at c1 t/R = {time}: {reason}");
+            assert!(
+                reason.contains("--poisson") && reason.contains("unstable"),
+                "{reason}"
+            );
+        }
+        other => panic!(
+            "an unstable march returned {:?}",
+            other.map(|s| s.runs.len())
+        ),
+    }
+    let sol = case(0.45).solve(|_| {}).unwrap();
+    let (rows, _) = sol.history();
+    for r in &rows {
+        // |F| <= 4 (b + dx) rho c1^2 R (the history's force is over rho c1^2 R), with a
+        // wide margin here
+        let force = r.force.value;
+        assert!(
+            force.abs() < 0.1 * 4.0 * (r.b.value + 0.005),
+            "{}: {force}",
+            r.t
+        );
+    }
+}
