@@ -631,17 +631,20 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
                 reason: "a non-finite penetration or force".into(),
             });
         }
-        // a mean contact pressure above 2 rho c1^2 (strains of order one, where linear
-        // elasticity says nothing; a plane wave at the speed c1 carries rho c1^2) is a march
-        // gone unstable, not a result (`docs/impact.md`, section 9, the force's bound)
+        // a mean contact pressure above 2 rho c1^2 (strains of order one; a plane wave at the
+        // speed c1 carries rho c1^2), or above that times twice the profile's mean slope over
+        // the contact, h/f^-1(h), where it is steeper than 1/2 (a sharp wedge's static
+        // pressure grows with its slope), is a march gone unstable, not a result
+        // (`docs/impact.md`, section 9, the force's bound)
         let width = b.max(kin_b).max(zero) + self.dx;
-        let bound = width * 4.0 / (m * m);
+        let slope = if kin_b > 0.0 { h.abs() / kin_b } else { zero };
+        let bound = width * 4.0 / (m * m) * (slope * 2.0).max(T::of(1.0));
         if f.abs() > bound {
             let rho_c1sq = T::of(1.0) / (m * m);
             return Err(ImpactError::Step {
                 time: format!("{:.6}", t.to_f64()),
                 reason: format!(
-                    "the force reached {:.3e} rho c1^2 R over a contact of half-width {:.3e} R, a mean pressure above 2 rho c1^2 (strains of order one): the march has gone unstable, as it does on nearly incompressible half-planes (poisson = {:.4}) under the kinematic law or driven (docs/impact.md, section 9): lower --poisson",
+                    "the force reached {:.3e} rho c1^2 R over a contact of half-width {:.3e} R, a mean pressure above 2 rho c1^2 (strains of order one) and the profile's slope allows: the march has gone unstable, as it does on nearly incompressible half-planes (poisson = {:.4}) under the kinematic law or driven (docs/impact.md, section 9): lower --poisson",
                     (f / rho_c1sq).to_f64(),
                     width.to_f64(),
                     self.tables.half_plane().poisson().to_f64()
