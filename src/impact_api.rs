@@ -428,7 +428,7 @@ pub fn run(
                 cost.gib(),
                 cost.steps,
                 cost.width,
-                if c.starts_finer() && c.start_halvings > 0 {
+                if c.starts_finer() {
                     format!(
                         ", its first steps on cells {} times finer: lower --start-halvings",
                         1u64 << c.start_halvings.min(63)

@@ -754,10 +754,15 @@ impl<T: Scalar> SolvedImpact<T> {
                 None => (floor.max(policy_estimate), false),
             })
         };
-        let est = |q: usize, i: usize| est_with(q, i).map(|(e, _)| e);
+        // every history's estimates, formed once: the rows and the error models read them
+        let estimates: Vec<Vec<Option<(f64, bool)>>> = (0..getters.len())
+            .map(|q| (0..times.len()).map(|i| est_with(q, i)).collect())
+            .collect();
+        let est = |q: usize, i: usize| estimates[q][i].map(|(e, _)| e);
         let order_shown = |q: usize, policy: SharpPolicy| {
-            let rows = (0..nuse.min(times.len()))
-                .filter(|&i| est_with(q, i).is_some_and(|(_, shown)| shown))
+            let rows = estimates[q][..nuse.min(times.len())]
+                .iter()
+                .filter(|e| e.is_some_and(|(_, shown)| shown))
                 .count();
             let (safety, p) = policy.shown_safety.zip(ords[q])?;
             (rows > 0).then(|| OrderShown {
@@ -772,12 +777,13 @@ impl<T: Scalar> SolvedImpact<T> {
         let model = |q: usize| -> ErrorModel {
             let cell_floor_rows = if q == Q_B { cell_floor_rows } else { 0 };
             // the sharp estimator where at least one row took it
-            match sharp(q).filter(|_| conservative_rows(q) < times.len()) {
+            let conservative = conservative_rows(q);
+            match sharp(q).filter(|_| conservative < times.len()) {
                 Some((policy, p)) => ErrorModel {
                     estimator: Estimator::Richardson,
                     safety: policy.safety,
                     order_credited: Some(p),
-                    conservative_rows: conservative_rows(q),
+                    conservative_rows: conservative,
                     cell_floor_rows,
                     order_shown: order_shown(q, policy),
                 },

@@ -638,9 +638,10 @@ impl<'a, T: Scalar + CachedRules> March<'a, T> {
         // (`docs/impact.md`, section 9, the force's bound)
         let width = b.max(kin_b).max(zero) + self.dx;
         let slope = if kin_b > 0.0 { h.abs() / kin_b } else { zero };
-        let bound = width * 4.0 / (m * m) * (slope * 2.0).max(T::of(1.0));
+        // rho c1^2 in the march's units of mu
+        let rho_c1sq = T::of(1.0) / (m * m);
+        let bound = width * rho_c1sq * 4.0 * (slope * 2.0).max(T::of(1.0));
         if f.abs() > bound {
-            let rho_c1sq = T::of(1.0) / (m * m);
             return Err(ImpactError::Step {
                 time: format!("{:.6}", t.to_f64()),
                 reason: format!(
